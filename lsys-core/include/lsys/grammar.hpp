@@ -1,0 +1,130 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lsys/alphabet.hpp"
+#include "lsys/expression.hpp"
+#include "lsys/settings.hpp"
+#include "lsys/source.hpp"
+#include "lsys/turtle_command.hpp"
+
+namespace lsys {
+
+/// Every grammar's alphabet starts with these three names, so the deriver
+/// can recognise branches and cuts without a lookup.
+inline constexpr SymbolId kBranchOpen = 0;   ///< `[`
+inline constexpr SymbolId kBranchClose = 1;  ///< `]`
+inline constexpr SymbolId kCut = 2;          ///< `%`
+
+/// A module of a predecessor or context: a name and the number of formal
+/// parameters it binds (their slots follow in pattern order).
+struct PatternModule {
+  SymbolId symbol = 0;
+  int parameter_count = 0;
+  std::size_t offset = 0;  ///< byte offset in the source
+};
+
+/// A module of a successor or the axiom, with parameter expressions.
+struct ModuleTemplate {
+  SymbolId symbol = 0;
+  std::vector<Expression> parameters;
+  std::size_t offset = 0;
+};
+
+/// The right-hand side of a production (or the axiom), also kept flat for
+/// the deriver: the expressions of all modules in one array and, when none
+/// depends on a parameter, their values.
+class Successor {
+ public:
+  Successor() = default;
+  /// @pre brackets in `modules` are balanced.
+  explicit Successor(std::vector<ModuleTemplate> modules);
+
+  /// The modules as written.
+  [[nodiscard]] const std::vector<ModuleTemplate>& modules() const noexcept {
+    return modules_;
+  }
+  [[nodiscard]] std::size_t size() const noexcept { return symbols_.size(); }
+  [[nodiscard]] const std::vector<SymbolId>& symbols() const noexcept {
+    return symbols_;
+  }
+  /// Where module i's values start in an instantiated parameter array; entry
+  /// `size()` is the total.
+  [[nodiscard]] const std::vector<std::uint32_t>& parameter_begins()
+      const noexcept {
+    return begins_;
+  }
+  /// True when every parameter expression is constant.
+  [[nodiscard]] bool is_constant() const noexcept { return is_constant_; }
+  /// The values of a constant successor, laid out by `parameter_begins()`.
+  [[nodiscard]] const std::vector<double>& constant_values() const noexcept {
+    return constant_values_;
+  }
+  /// Evaluates every parameter expression into `out` (resized).
+  /// @throws ParseError from Expression::evaluate.
+  void instantiate(std::span<const double> slots,
+                   std::vector<double>& out) const;
+
+ private:
+  std::vector<ModuleTemplate> modules_;
+  std::vector<SymbolId> symbols_;
+  std::vector<std::uint32_t> begins_{0};
+  std::vector<Expression> expressions_;
+  std::vector<double> constant_values_;
+  bool is_constant_ = true;
+};
+
+/// A production `lc < pred > rc : condition → successor : probability`
+/// (ABOP §1.7, 1.8, 1.10). Formal parameters are numbered left context
+/// first, then predecessor, then right context.
+struct Production {
+  std::vector<PatternModule> left_context;
+  PatternModule predecessor;
+  /// May contain `[` and `]` (ABOP p. 32); the left context may not.
+  std::vector<PatternModule> right_context;
+  std::optional<Expression> condition;
+  /// The weight of a stochastic production; absent means weight 1.
+  std::optional<Expression> probability;
+  Successor successor;
+  std::size_t offset = 0;  ///< byte offset of the production
+
+  /// True when the production has a left or right context.
+  [[nodiscard]] bool is_context_sensitive() const noexcept {
+    return !left_context.empty() || !right_context.empty();
+  }
+};
+
+/// An L-system as read from a `.ls` file: alphabet, axiom, productions,
+/// interpretation rules and settings.
+struct Grammar {
+  std::shared_ptr<const SourceFile> source;
+  Alphabet alphabet;
+  Successor axiom;
+  std::size_t axiom_offset = 0;
+  /// Rewritten in parallel, one step per generation; first applicable wins,
+  /// or a weighted choice when any has a probability.
+  std::vector<Production> productions;
+  /// Applied to each new module right after each step, recursively up to
+  /// `settings.maximum_depth`; context-free, deterministic.
+  std::vector<Production> decompositions;
+  /// Applied while interpreting only (homomorphism, `interpretation:`),
+  /// recursively up to `settings.maximum_depth`; context-free, deterministic.
+  std::vector<Production> homomorphisms;
+  /// The turtle command of each symbol after aliases.
+  std::vector<TurtleCommand> commands;
+  Settings settings;
+  /// `#define` and `--define` values.
+  std::map<std::string, double> constants;
+  /// Settings accepted for a client (see ParseOptions::extra_settings).
+  std::vector<ExtraSetting> extra_settings;
+};
+
+}  // namespace lsys

@@ -1,0 +1,36 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "lsys/grammar.hpp"
+#include "lsys/source.hpp"
+
+namespace lsys {
+
+/// What the caller adds to a file.
+struct ParseOptions {
+  /// `NAME=VALUE` texts, as `--define` gives them. They replace the file's
+  /// `#define` of the same name and may add new names.
+  std::vector<std::string> defines;
+  /// Keys of settings that a client interprets itself (lsys-solid's print
+  /// settings); they are returned in Grammar::extra_settings.
+  std::vector<std::string> extra_settings;
+};
+
+/// Reads a `.ls` file (docs/language.md).
+/// @throws ParseError with file, line and column for any malformed input.
+[[nodiscard]] Grammar parse_grammar(std::shared_ptr<const SourceFile> source,
+                                    const ParseOptions& options = {});
+
+/// Reads `.ls` text held in memory, named `name` in diagnostics.
+/// @throws ParseError as parse_grammar.
+[[nodiscard]] Grammar parse_grammar_text(std::string_view text,
+                                         const ParseOptions& options = {},
+                                         std::string name = "<text>");
+
+}  // namespace lsys

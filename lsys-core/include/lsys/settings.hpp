@@ -1,0 +1,59 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lsys/alphabet.hpp"
+
+namespace lsys {
+
+/// Which way `/` and `\` roll. Lpfg (lpfg's default, L-Py, dotSCAD): `/`
+/// rolls left toward up. Cpfg: the opposite, as cpfg computes it.
+enum class RollConvention { Lpfg, Cpfg };
+
+/// A setting that lsys-core does not interpret but accepts on behalf of a
+/// client (the print settings of lsys-solid), with where its value stands.
+struct ExtraSetting {
+  std::string key;     ///< as the client named it
+  std::string value;   ///< the text after `:` or `=`, trimmed
+  std::size_t offset;  ///< byte offset of the value, for diagnostics
+};
+
+/// The settings of a `.ls` file (docs/language.md lists every one with its
+/// spellings). Lengths are in model units; widths are diameters.
+struct Settings {
+  int derivation_length = 1;   ///< `n`
+  double angle_deg = 45.0;     ///< δ, cpfg's default
+  double step = 1.0;           ///< the length of `F` without a parameter
+  double initial_width = 1.0;  ///< diameter, cpfg's default
+  /// Bare `!` subtracts this when set (cpfg's `line width increment`)...
+  std::optional<double> width_increment;
+  /// ...and otherwise multiplies by this (Houdini's thickness scale; the
+  /// default is Honda's and da Vinci's 1/√2 ≈ 0.707).
+  double width_factor = 0.707;
+  /// Multiplies every width, for files whose widths are in other units
+  /// than their lengths (cpfg widths are pixels).
+  double width_scale = 1.0;
+  /// Diameter lost per derivation step that created a module (seed 001's
+  /// "branch radius reduction", doubled).
+  double width_decrement_per_generation = 0.0;
+  int initial_color = 0;
+  glm::dvec3 tropism{0.0, 0.0, -1.0};  ///< T, world coordinates (Z up)
+  double elasticity = 0.0;             ///< e; 0 turns tropism off
+  std::uint64_t seed = 0;
+  RollConvention roll = RollConvention::Lpfg;
+  int maximum_depth = 1;         ///< of homomorphism and decomposition, as cpfg
+  std::vector<SymbolId> ignore;  ///< skipped when matching context
+  std::vector<SymbolId> consider;  ///< if not empty, only these are seen
+
+  /// Byte offset of the `n` setting, if the file has one.
+  std::optional<std::size_t> derivation_length_offset;
+};
+
+}  // namespace lsys

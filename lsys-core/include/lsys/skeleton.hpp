@@ -1,0 +1,44 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <vector>
+
+namespace lsys {
+
+/// What the turtle drew. Coordinates are in model units: one unit is the
+/// default step of `F`. Z is up (the printing direction).
+///
+/// A drawn segment (ABOP's internode): a frustum from p0 to p1.
+struct Segment {
+  glm::dvec3 p0{0.0};
+  glm::dvec3 p1{0.0};
+  double start_diameter = 0.0;
+  double end_diameter = 0.0;
+  int color = 0;
+  /// The segment this one continues from (the turtle drew it last and has
+  /// not moved without drawing since), or -1. A branch's first segment
+  /// names the segment it branches from.
+  std::int32_t parent = -1;
+};
+
+/// A filled polygon from `{ … }` (ABOP §5.1): a leaf or petal.
+struct Polygon {
+  std::vector<glm::dvec3> points;  ///< at least 3, no two consecutive equal
+  int color = 0;
+  /// The segment drawn last before `{`, which the polygon grows from, or -1.
+  std::int32_t parent = -1;
+};
+
+/// The interpretation of a derived string.
+struct Skeleton {
+  std::vector<Segment> segments;
+  std::vector<Polygon> polygons;
+  /// Polygons dropped because fewer than 3 distinct points remained.
+  std::size_t degenerate_polygons = 0;
+};
+
+}  // namespace lsys

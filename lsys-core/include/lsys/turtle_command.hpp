@@ -1,0 +1,48 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+namespace lsys {
+
+/// What the turtle does with a module (docs/turtle.md has the exact effect
+/// of each, with its source).
+enum class TurtleCommand {
+  None,            ///< any other module: kept in the string, no action
+  Draw,            ///< `F`: move, draw a segment; a vertex inside `{ }`
+  Move,            ///< `f`: move without drawing; a vertex inside `{ }`
+  DrawNoVertex,    ///< `G`: move and draw, never a polygon vertex
+  MoveNoVertex,    ///< `g`: move, never a polygon vertex
+  TurnLeft,        ///< `+`: about up, heading toward left
+  TurnRight,       ///< `-`
+  PitchDown,       ///< `&`: about left, heading toward -up
+  PitchUp,         ///< `^` (also `∧`)
+  RollRight,       ///< `/`: about heading, left toward up
+  RollLeft,        ///< `\`
+  TurnAround,      ///< `|`: 180 degrees about up
+  RollToVertical,  ///< `$` (also `@v`): left made horizontal, ABOP p. 57
+  Push,            ///< `[`
+  Pop,             ///< `]`
+  PolygonBegin,    ///< `{`
+  PolygonVertex,   ///< `.`
+  PolygonEnd,      ///< `}`
+  Width,           ///< `!`: set the width, or apply the width rule
+  ColorNext,       ///< `'` and `;`: next colour index, or set it
+  ColorPrevious,   ///< `,`: previous colour index, or set it
+  Cut,             ///< `%`: cut the rest of the branch (while deriving)
+  SetTropism,      ///< `@Tp(x,y,z)`: the tropism vector
+  SetElasticity,   ///< `@Ts(e)`: the elasticity
+};
+
+/// The command a module name has without aliases, if it has one.
+[[nodiscard]] std::optional<TurtleCommand> builtin_command(
+    std::string_view name) noexcept;
+
+/// The most parameters a command accepts (`F(l, w)` takes two).
+[[nodiscard]] int max_parameters(TurtleCommand command) noexcept;
+/// The fewest parameters a command needs (`@Tp` needs three).
+[[nodiscard]] int min_parameters(TurtleCommand command) noexcept;
+
+}  // namespace lsys

@@ -1,0 +1,739 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// Parallel rewriting (ABOP §1.1) in two ways. Context-free grammars stream
+// depth-first: the n-th string is the left-to-right walk of the derivation
+// tree, so only one path of successors is held at a time (seed 004,
+// "tree-based structure"). Context-sensitive grammars (ABOP §1.8, p. 32 for
+// bracketed contexts) and grammars with cuts (`%`, ABOP p. 73) rewrite the
+// whole string each step. Stochastic choices (ABOP §1.7) are keyed by the
+// module's place in its string (lsys/random.hpp), so both ways agree.
+#include "lsys/derivation.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "lsys/diagnostic.hpp"
+#include "lsys/random.hpp"
+#include "rule_index.hpp"
+
+namespace lsys {
+namespace {
+
+constexpr double kHuge = 1e300;
+
+std::string count_text(double value) {
+  std::string out;
+  if (value < 1e15) {
+    out = std::to_string(static_cast<std::uint64_t>(value));
+  } else {
+    std::array<char, 32> buffer{};
+    const auto r = std::to_chars(buffer.data(), buffer.data() + buffer.size(),
+                                 value, std::chars_format::scientific, 2);
+    out.assign(buffer.data(), r.ptr);
+  }
+  return out;
+}
+
+bool successor_has_cut(const Successor& s) {
+  return std::find(s.symbols().begin(), s.symbols().end(), kCut) !=
+         s.symbols().end();
+}
+
+bool has_cut(const Grammar& g) {
+  if (successor_has_cut(g.axiom)) return true;
+  for (const auto* rules : {&g.productions, &g.decompositions}) {
+    for (const Production& p : *rules) {
+      if (successor_has_cut(p.successor)) return true;
+    }
+  }
+  return false;
+}
+
+bool is_drawing(TurtleCommand c) {
+  return c == TurtleCommand::Draw || c == TurtleCommand::DrawNoVertex;
+}
+
+// Segments drawn by interpreting one module, through the homomorphism.
+// Conditional homomorphisms give an upper bound (the largest alternative).
+class SegmentWeights {
+ public:
+  SegmentWeights(const Grammar& g, const RuleIndex& homomorphisms)
+      : grammar_(g), homomorphisms_(homomorphisms) {}
+
+  double weight(SymbolId symbol, int arity, int depth = 0) {
+    const auto key = std::tuple{symbol, arity, depth};
+    if (const auto it = memo_.find(key); it != memo_.end()) return it->second;
+    double best = -1.0;
+    if (depth < grammar_.settings.maximum_depth) {
+      for (const Production* rule : homomorphisms_.rules_for(symbol)) {
+        if (rule->predecessor.parameter_count != arity) continue;
+        double sum = 0.0;
+        for (const ModuleTemplate& m : rule->successor.modules()) {
+          sum += weight(m.symbol, static_cast<int>(m.parameters.size()),
+                        depth + 1);
+        }
+        best = std::max(best, std::min(sum, kHuge));
+        if (!rule->condition) break;  // later rules never apply
+      }
+    }
+    if (best < 0.0) best = is_drawing(grammar_.commands[symbol]) ? 1.0 : 0.0;
+    memo_[key] = best;
+    return best;
+  }
+
+  // An upper bound for any arity, for counting while streaming.
+  double any_arity(SymbolId symbol) {
+    double best = weight(symbol, 0);
+    for (const Production* rule : homomorphisms_.rules_for(symbol)) {
+      best = std::max(best, weight(symbol, rule->predecessor.parameter_count));
+    }
+    return best;
+  }
+
+ private:
+  const Grammar& grammar_;
+  const RuleIndex& homomorphisms_;
+  std::map<std::tuple<SymbolId, int, int>, double> memo_;
+};
+
+bool is_predictable(const Grammar& g) {
+  for (const auto* rules : {&g.productions, &g.decompositions}) {
+    for (const Production& p : *rules) {
+      if (p.condition || p.probability || p.is_context_sensitive()) {
+        return false;
+      }
+    }
+  }
+  for (const Production& p : g.homomorphisms) {
+    if (p.condition) return false;
+  }
+  return !has_cut(g);
+}
+
+// The count matrix over (symbol, arity) kinds, with decomposition folded in.
+class CountMatrix {
+ public:
+  CountMatrix(const Grammar& g, const RuleIndex& productions,
+              const RuleIndex& decompositions)
+      : grammar_(g),
+        productions_(productions),
+        decompositions_(decompositions) {}
+
+  SizePrediction predict(int n, SegmentWeights& weights) {
+    std::vector<double> v;
+    for (const ModuleTemplate& m : grammar_.axiom.modules()) {
+      add(v, decomposed(kind(m), 0));
+    }
+    // Rows of the matrix: what one step makes of each kind. Computing a row
+    // may add kinds, so rows are filled on demand.
+    std::vector<std::vector<double>> rows;
+    for (int step = 0; step < n; ++step) {
+      std::vector<double> next;
+      for (std::size_t k = 0; k < v.size(); ++k) {
+        if (v[k] == 0.0) continue;
+        while (rows.size() <= k) rows.push_back(row(rows.size()));
+        add(next, rows[k], v[k]);
+      }
+      v = std::move(next);
+    }
+    SizePrediction p{.is_exact = true};
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      p.modules = std::min(kHuge, p.modules + v[k]);
+      p.segments =
+          std::min(kHuge, p.segments + v[k] * weights.weight(kinds_[k].first,
+                                                             kinds_[k].second));
+    }
+    return p;
+  }
+
+ private:
+  std::size_t kind(SymbolId symbol, int arity) {
+    const auto key = std::pair{symbol, arity};
+    const auto it = std::find(kinds_.begin(), kinds_.end(), key);
+    if (it != kinds_.end())
+      return static_cast<std::size_t>(it - kinds_.begin());
+    kinds_.push_back(key);
+    return kinds_.size() - 1;
+  }
+  std::size_t kind(const ModuleTemplate& m) {
+    return kind(m.symbol, static_cast<int>(m.parameters.size()));
+  }
+
+  static void add(std::vector<double>& to, const std::vector<double>& from,
+                  double times = 1.0) {
+    if (to.size() < from.size()) to.resize(from.size(), 0.0);
+    for (std::size_t i = 0; i < from.size(); ++i) {
+      to[i] = std::min(kHuge, to[i] + times * from[i]);
+    }
+  }
+
+  const Production* rule_for(const RuleIndex& index, std::size_t k) const {
+    for (const Production* rule : index.rules_for(kinds_[k].first)) {
+      if (rule->predecessor.parameter_count == kinds_[k].second) return rule;
+    }
+    return nullptr;
+  }
+
+  std::vector<double> decomposed(std::size_t k, int depth) {
+    const Production* rule = depth < grammar_.settings.maximum_depth
+                                 ? rule_for(decompositions_, k)
+                                 : nullptr;
+    std::vector<double> out;
+    if (rule == nullptr) {
+      out.resize(k + 1, 0.0);
+      out[k] = 1.0;
+      return out;
+    }
+    for (const ModuleTemplate& m : rule->successor.modules()) {
+      add(out, decomposed(kind(m), depth + 1));
+    }
+    return out;
+  }
+
+  std::vector<double> row(std::size_t k) {
+    const Production* rule = rule_for(productions_, k);
+    if (rule == nullptr) {
+      std::vector<double> out(k + 1, 0.0);
+      out[k] = 1.0;
+      return out;
+    }
+    std::vector<double> out;
+    for (const ModuleTemplate& m : rule->successor.modules()) {
+      add(out, decomposed(kind(m), 0));
+    }
+    return out;
+  }
+
+  const Grammar& grammar_;
+  const RuleIndex& productions_;
+  const RuleIndex& decompositions_;
+  std::vector<std::pair<SymbolId, int>> kinds_;
+};
+
+}  // namespace
+
+std::optional<SizePrediction> predict_size(const Grammar& grammar,
+                                           int derivation_length) {
+  if (!is_predictable(grammar)) return std::nullopt;
+  const RuleIndex productions(grammar.productions, grammar.alphabet.size());
+  const RuleIndex decompositions(grammar.decompositions,
+                                 grammar.alphabet.size());
+  const RuleIndex homomorphisms(grammar.homomorphisms, grammar.alphabet.size());
+  SegmentWeights weights(grammar, homomorphisms);
+  return CountMatrix(grammar, productions, decompositions)
+      .predict(derivation_length, weights);
+}
+
+class Derivation::Impl {
+ public:
+  Impl(const Grammar& grammar, const DerivationOptions& options)
+      : grammar_(grammar),
+        options_(options),
+        n_(options.derivation_length.value_or(
+            grammar.settings.derivation_length)),
+        seed_(options.seed.value_or(grammar.settings.seed)),
+        productions_(grammar.productions, grammar.alphabet.size()),
+        decompositions_(grammar.decompositions, grammar.alphabet.size()),
+        homomorphisms_(grammar.homomorphisms, grammar.alphabet.size()),
+        weights_(grammar, homomorphisms_) {
+    for (const Production& p : grammar.productions) {
+      is_context_sensitive_ = is_context_sensitive_ || p.is_context_sensitive();
+      if (p.probability) {
+        is_stochastic_ = true;
+        if (stochastic_symbol_.empty()) {
+          stochastic_symbol_.resize(grammar.alphabet.size(), false);
+        }
+        stochastic_symbol_[p.predecessor.symbol] = true;
+      }
+    }
+    is_streaming_ = !is_context_sensitive_ && !has_cut(grammar);
+    check_prediction();
+    if (is_streaming_) {
+      expanded_.assign(static_cast<std::size_t>(n_) + 1, 0);
+      emitted_.assign(static_cast<std::size_t>(n_) + 1, 0);
+      push(grammar_.axiom, {}, 0, 0);
+    }
+  }
+
+  bool next(ModuleString& chunk, std::size_t chunk_size) {
+    chunk.clear();
+    if (is_streaming_) {
+      stream(chunk, chunk_size);
+    } else {
+      if (!materialised_) materialise();
+      const std::size_t end = std::min(string_.size(), served_ + chunk_size);
+      for (; served_ < end; ++served_) chunk.push_back(string_, served_);
+    }
+    return !chunk.empty();
+  }
+
+  int derivation_length() const noexcept { return n_; }
+  bool is_streaming() const noexcept { return is_streaming_; }
+  const std::optional<SizePrediction>& prediction() const noexcept {
+    return prediction_;
+  }
+
+ private:
+  struct Frame {
+    const Successor* successor;
+    const double* values;
+    std::uint32_t position;
+    std::uint32_t step;
+    std::uint32_t depth;
+  };
+
+  // Where limit errors point: the `n` setting, else the axiom.
+  std::size_t limit_offset() const {
+    if (!options_.derivation_length &&
+        grammar_.settings.derivation_length_offset) {
+      return *grammar_.settings.derivation_length_offset;
+    }
+    return grammar_.axiom_offset;
+  }
+
+  [[noreturn]] void refuse(const std::string& what) const {
+    throw error_at(*grammar_.source, limit_offset(),
+                   "n = " + std::to_string(n_) + " " + what);
+  }
+
+  void check_prediction() {
+    prediction_ = predict_size(grammar_, n_);
+    if (!prediction_) return;
+    const auto max_modules = static_cast<double>(options_.max_modules);
+    const auto max_segments = static_cast<double>(options_.max_segments);
+    if (prediction_->segments > max_segments) {
+      refuse("would draw " + count_text(prediction_->segments) +
+             " segments, more than the limit of " + count_text(max_segments) +
+             " (--max-segments)");
+    }
+    if (prediction_->modules > max_modules) {
+      refuse("would derive a string of " + count_text(prediction_->modules) +
+             " modules, more than the limit of " + count_text(max_modules) +
+             " (--max-modules)");
+    }
+    is_counting_ = false;
+  }
+
+  void count(SymbolId symbol) {
+    if (++modules_ > options_.max_modules) {
+      refuse("derives more than the limit of " +
+             count_text(static_cast<double>(options_.max_modules)) +
+             " modules (--max-modules)");
+    }
+    if (segment_weight_.empty())
+      segment_weight_.resize(grammar_.alphabet.size(), -1.0);
+    double& weight = segment_weight_[symbol];
+    if (weight < 0.0) weight = weights_.any_arity(symbol);
+    segments_ += weight;
+    if (segments_ > static_cast<double>(options_.max_segments)) {
+      refuse("draws more than the limit of " +
+             count_text(static_cast<double>(options_.max_segments)) +
+             " segments (--max-segments)");
+    }
+  }
+
+  // Chooses the production for a module: the first applicable one, or a
+  // weighted choice among the applicable ones when any is stochastic
+  // (weights normalised over those that apply, as cpfg does).
+  template <typename Applicable, typename Position>
+  const Production* choose(SymbolId symbol, std::uint32_t step,
+                           const Applicable& applicable,
+                           const Position& position) {
+    const auto rules = productions_.rules_for(symbol);
+    if (!is_stochastic_ || !stochastic_symbol_[symbol]) {
+      for (const Production* rule : rules) {
+        if (applicable(*rule)) return rule;
+      }
+      return nullptr;
+    }
+    candidates_.clear();
+    double total = 0.0;
+    for (const Production* rule : rules) {
+      if (!applicable(*rule)) continue;
+      const double w =
+          rule->probability ? rule->probability->evaluate(slots_) : 1.0;
+      if (w < 0.0) {
+        throw error_at(*grammar_.source, rule->probability->offset(),
+                       "a probability cannot be negative");
+      }
+      candidates_.emplace_back(rule, w);
+      total += w;
+    }
+    if (candidates_.empty()) return nullptr;
+    if (total <= 0.0) {
+      throw error_at(*grammar_.source, candidates_.front().first->offset,
+                     "the probabilities of the applicable productions of '" +
+                         grammar_.alphabet.name(symbol) + "' sum to zero");
+    }
+    const double u = stochastic_uniform(seed_, step, position()) * total;
+    double sum = 0.0;
+    for (const auto& [rule, w] : candidates_) {
+      sum += w;
+      if (u < sum) return rule;
+    }
+    return candidates_.back().first;
+  }
+
+  // --- Streaming ----------------------------------------------------------
+
+  void push(const Successor& successor, std::span<const double> slots,
+            std::uint32_t step, std::uint32_t depth) {
+    const std::size_t level = frames_.size();
+    const double* values = successor.constant_values().data();
+    if (!successor.is_constant()) {
+      if (buffers_.size() <= level) buffers_.resize(level + 1);
+      successor.instantiate(slots, buffers_[level]);
+      values = buffers_[level].data();
+    }
+    frames_.push_back(Frame{&successor, values, 0, step, depth});
+  }
+
+  std::uint64_t stream_position(std::uint32_t step) const {
+    std::uint64_t position = expanded_[step];
+    for (std::uint32_t i = 0; i <= step; ++i) position += emitted_[i];
+    return position;
+  }
+
+  void stream(ModuleString& chunk, std::size_t chunk_size) {
+    const auto max_depth =
+        static_cast<std::uint32_t>(grammar_.settings.maximum_depth);
+    const auto n = static_cast<std::uint32_t>(n_);
+    const bool has_decompositions = !grammar_.decompositions.empty();
+    while (!frames_.empty() && chunk.size() < chunk_size) {
+      Frame& frame = frames_.back();
+      if (frame.position == frame.successor->size()) {
+        frames_.pop_back();
+        continue;
+      }
+      const std::uint32_t i = frame.position++;
+      const SymbolId symbol = frame.successor->symbols()[i];
+      const auto& begins = frame.successor->parameter_begins();
+      const std::span<const double> params(frame.values + begins[i],
+                                           begins[i + 1] - begins[i]);
+      const std::uint32_t step = frame.step;
+      if (has_decompositions && frame.depth < max_depth &&
+          decompositions_.has_rules(symbol)) {
+        if (const Production* d =
+                decompositions_.first_applicable(symbol, params)) {
+          push(d->successor, params, step, frame.depth + 1);
+          continue;
+        }
+      }
+      if (step < n) {
+        const Production* rule = productions_.only_rule(symbol);
+        if (rule == nullptr || rule->predecessor.parameter_count !=
+                                   static_cast<int>(params.size())) {
+          rule = choose_streaming(symbol, params, step);
+        }
+        if (rule != nullptr) {
+          if (is_stochastic_) ++expanded_[step];
+          push(rule->successor, params, step + 1, 0);
+          continue;
+        }
+      }
+      if (is_stochastic_) ++emitted_[step];
+      if (is_counting_) count(symbol);
+      chunk.push_back(symbol, params, step);
+    }
+  }
+
+  const Production* choose_streaming(SymbolId symbol,
+                                     std::span<const double> params,
+                                     std::uint32_t step) {
+    if (!productions_.has_rules(symbol)) return nullptr;
+    slots_.assign(params.begin(), params.end());
+    return choose(
+        symbol, step,
+        [&](const Production& rule) {
+          return rule.predecessor.parameter_count ==
+                     static_cast<int>(params.size()) &&
+                 condition_holds(rule, slots_);
+        },
+        [&] { return stream_position(step); });
+  }
+
+  // --- Rewriting the whole string -----------------------------------------
+
+  bool is_ignored(SymbolId s) const {
+    if (s == kBranchOpen || s == kBranchClose) return false;
+    const auto& consider = grammar_.settings.consider;
+    if (!consider.empty()) {
+      return std::find(consider.begin(), consider.end(), s) == consider.end();
+    }
+    const auto& ignore = grammar_.settings.ignore;
+    return std::find(ignore.begin(), ignore.end(), s) != ignore.end();
+  }
+
+  static bool same_module(const ModuleString& s, std::size_t i,
+                          const PatternModule& p) {
+    return s.symbol(i) == p.symbol &&
+           s.parameters(i).size() ==
+               static_cast<std::size_t>(p.parameter_count);
+  }
+
+  // ABOP p. 32: the left context skips whole branches to the left and
+  // climbs out of the branch the module is in.
+  bool match_left(const ModuleString& s, std::size_t i,
+                  const std::vector<PatternModule>& pattern) {
+    matched_.resize(pattern.size());
+    std::size_t j = i;
+    for (std::size_t t = pattern.size(); t-- > 0;) {
+      for (;;) {
+        if (j == 0) return false;
+        --j;
+        const SymbolId sym = s.symbol(j);
+        if (sym == kBranchClose) {
+          j = match_[j];
+        } else if (sym != kBranchOpen && !is_ignored(sym)) {
+          break;
+        }
+      }
+      if (!same_module(s, j, pattern[t])) return false;
+      matched_[t] = j;
+    }
+    for (std::size_t t : matched_) {
+      const auto p = s.parameters(t);
+      slots_.insert(slots_.end(), p.begin(), p.end());
+    }
+    return true;
+  }
+
+  // ABOP p. 32: the right context may enter a branch where the pattern has
+  // `[`; other branches are skipped; it never leaves the current branch.
+  bool match_right(const ModuleString& s, std::size_t i,
+                   const std::vector<PatternModule>& pattern) {
+    std::size_t j = i + 1;
+    open_.clear();
+    for (const PatternModule& p : pattern) {
+      if (p.symbol == kBranchClose) {
+        j = match_[open_.back()] + 1;
+        open_.pop_back();
+        continue;
+      }
+      for (;;) {
+        if (j >= s.size()) return false;
+        const SymbolId sym = s.symbol(j);
+        if (sym == kBranchOpen && p.symbol != kBranchOpen) {
+          j = match_[j] + 1;
+        } else if (sym == kBranchClose) {
+          return false;
+        } else if (is_ignored(sym)) {
+          ++j;
+        } else {
+          break;
+        }
+      }
+      if (!same_module(s, j, p)) return false;
+      if (p.symbol == kBranchOpen) {
+        open_.push_back(j);
+      } else {
+        const auto params = s.parameters(j);
+        slots_.insert(slots_.end(), params.begin(), params.end());
+      }
+      ++j;
+    }
+    return true;
+  }
+
+  bool applies(const ModuleString& s, std::size_t i, const Production& rule) {
+    slots_.clear();
+    if (!rule.left_context.empty() && !match_left(s, i, rule.left_context)) {
+      return false;
+    }
+    if (!same_module(s, i, rule.predecessor)) return false;
+    const auto params = s.parameters(i);
+    slots_.insert(slots_.end(), params.begin(), params.end());
+    if (!rule.right_context.empty() && !match_right(s, i, rule.right_context)) {
+      return false;
+    }
+    return condition_holds(rule, slots_);
+  }
+
+  void compute_matches(const ModuleString& s) {
+    match_.assign(s.size(), 0);
+    open_.clear();
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      if (s.symbol(i) == kBranchOpen) open_.push_back(i);
+      if (s.symbol(i) == kBranchClose && !open_.empty()) {
+        match_[i] = open_.back();
+        match_[open_.back()] = i;
+        open_.pop_back();
+      }
+    }
+  }
+
+  void append_decomposed(ModuleString& out, SymbolId symbol,
+                         std::span<const double> params, std::uint32_t step,
+                         int depth) {
+    if (depth < grammar_.settings.maximum_depth &&
+        decompositions_.has_rules(symbol)) {
+      if (const Production* d =
+              decompositions_.first_applicable(symbol, params)) {
+        std::vector<double> values;
+        d->successor.instantiate(params, values);
+        const auto& begins = d->successor.parameter_begins();
+        for (std::size_t k = 0; k < d->successor.size(); ++k) {
+          append_decomposed(out, d->successor.symbols()[k],
+                            std::span<const double>(values).subspan(
+                                begins[k], begins[k + 1] - begins[k]),
+                            step, depth + 1);
+        }
+        return;
+      }
+    }
+    out.push_back(symbol, params, step);
+  }
+
+  void append_successor(ModuleString& out, const Successor& successor,
+                        std::span<const double> slots, std::uint32_t step) {
+    std::vector<double> values;
+    successor.instantiate(slots, values);
+    const auto& begins = successor.parameter_begins();
+    for (std::size_t k = 0; k < successor.size(); ++k) {
+      append_decomposed(out, successor.symbols()[k],
+                        std::span<const double>(values).subspan(
+                            begins[k], begins[k + 1] - begins[k]),
+                        step, 0);
+    }
+  }
+
+  // ABOP p. 73: `%` removes itself and the rest of its branch.
+  static void cut(ModuleString& s) {
+    if (std::find(s.symbols().begin(), s.symbols().end(), kCut) ==
+        s.symbols().end()) {
+      return;
+    }
+    ModuleString kept;
+    bool cutting = false;
+    int depth = 0;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const SymbolId sym = s.symbol(i);
+      if (!cutting) {
+        if (sym == kCut) {
+          cutting = true;
+          depth = 0;
+          continue;
+        }
+        kept.push_back(s, i);
+        continue;
+      }
+      if (sym == kBranchOpen) ++depth;
+      if (sym == kBranchClose && depth-- == 0) {
+        cutting = false;
+        kept.push_back(s, i);
+      }
+    }
+    s = std::move(kept);
+  }
+
+  void materialise() {
+    materialised_ = true;
+    append_successor(string_, grammar_.axiom, {}, 0);
+    cut(string_);
+    ModuleString next;
+    for (int step = 0; step < n_; ++step) {
+      if (is_context_sensitive_) compute_matches(string_);
+      next.clear();
+      const auto k = static_cast<std::uint32_t>(step);
+      for (std::size_t i = 0; i < string_.size(); ++i) {
+        const SymbolId symbol = string_.symbol(i);
+        const Production* rule = nullptr;
+        if (productions_.has_rules(symbol)) {
+          rule = choose(
+              symbol, k,
+              [&](const Production& r) { return applies(string_, i, r); },
+              [&] { return static_cast<std::uint64_t>(i); });
+          // A stochastic choice evaluates every candidate, leaving the slots
+          // of the last; bind the chosen rule's again.
+          if (rule != nullptr && is_stochastic_ && stochastic_symbol_[symbol]) {
+            (void)applies(string_, i, *rule);
+          }
+        }
+        if (rule != nullptr) {
+          append_successor(next, rule->successor, slots_, k + 1);
+        } else {
+          next.push_back(string_, i);
+        }
+        if (next.size() > options_.max_modules) {
+          refuse("derives more than the limit of " +
+                 count_text(static_cast<double>(options_.max_modules)) +
+                 " modules (--max-modules)");
+        }
+      }
+      cut(next);
+      std::swap(string_, next);
+    }
+    if (is_counting_) {
+      for (std::size_t i = 0; i < string_.size(); ++i) count(string_.symbol(i));
+    }
+  }
+
+  const Grammar& grammar_;
+  DerivationOptions options_;
+  int n_;
+  std::uint64_t seed_;
+  RuleIndex productions_;
+  RuleIndex decompositions_;
+  RuleIndex homomorphisms_;
+  SegmentWeights weights_;
+  std::optional<SizePrediction> prediction_;
+  bool is_context_sensitive_ = false;
+  bool is_stochastic_ = false;
+  bool is_streaming_ = true;
+  bool is_counting_ = true;
+  std::vector<bool> stochastic_symbol_;
+
+  std::vector<Frame> frames_;
+  std::vector<std::vector<double>> buffers_;
+  std::vector<std::uint64_t> expanded_;
+  std::vector<std::uint64_t> emitted_;
+
+  bool materialised_ = false;
+  ModuleString string_;
+  std::size_t served_ = 0;
+  std::vector<std::size_t> match_;
+  std::vector<std::size_t> open_;
+  std::vector<std::size_t> matched_;
+
+  std::vector<double> slots_;
+  std::vector<std::pair<const Production*, double>> candidates_;
+  std::uint64_t modules_ = 0;
+  double segments_ = 0.0;
+  std::vector<double> segment_weight_;
+};
+
+Derivation::Derivation(const Grammar& grammar, const DerivationOptions& options)
+    : impl_(std::make_unique<Impl>(grammar, options)) {}
+
+Derivation::~Derivation() = default;
+
+bool Derivation::next(ModuleString& chunk, std::size_t chunk_size) {
+  return impl_->next(chunk, chunk_size);
+}
+
+int Derivation::derivation_length() const noexcept {
+  return impl_->derivation_length();
+}
+
+bool Derivation::is_streaming() const noexcept { return impl_->is_streaming(); }
+
+const std::optional<SizePrediction>& Derivation::prediction() const noexcept {
+  return impl_->prediction();
+}
+
+ModuleString derive(const Grammar& grammar, const DerivationOptions& options) {
+  Derivation derivation(grammar, options);
+  ModuleString all;
+  ModuleString chunk;
+  while (derivation.next(chunk)) {
+    for (std::size_t i = 0; i < chunk.size(); ++i) all.push_back(chunk, i);
+  }
+  return all;
+}
+
+}  // namespace lsys

@@ -1,0 +1,277 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// Turtle interpretation (ABOP §1.5, p. 209 for the symbols; §1.10.3 for
+// parameters; §2.2, p. 58 for tropism; §5.1 for polygons), with the
+// homomorphism of cpfg and L-Py applied on the fly.
+#include "lsys/interpretation.hpp"
+
+#include <algorithm>
+#include <glm/geometric.hpp>
+
+#include "lsys/turtle.hpp"
+#include "rule_index.hpp"
+
+namespace lsys {
+namespace {
+
+struct TurtleState {
+  Turtle turtle;
+  double width = 1.0;  // diameter in model units, width_scale applied
+  int color = 0;
+  double step = 1.0;
+  double angle_deg = 45.0;
+  glm::dvec3 tropism{0.0};
+  double elasticity = 0.0;
+  std::int32_t last_segment = -1;
+};
+
+class Interpreter {
+ public:
+  Interpreter(const Grammar& grammar, const InterpretOptions& options)
+      : grammar_(grammar),
+        settings_(grammar.settings),
+        homomorphisms_(grammar.homomorphisms, grammar.alphabet.size()),
+        roll_sign_(options.roll.value_or(settings_.roll) == RollConvention::Cpfg
+                       ? -1.0
+                       : 1.0) {
+    state_.width = settings_.initial_width * settings_.width_scale;
+    state_.color = settings_.initial_color;
+    state_.step = settings_.step;
+    state_.angle_deg = settings_.angle_deg;
+    state_.tropism = settings_.tropism;
+    state_.elasticity = settings_.elasticity;
+    buffers_.resize(static_cast<std::size_t>(settings_.maximum_depth) + 1);
+  }
+
+  void reserve(std::size_t segments) { skeleton_.segments.reserve(segments); }
+
+  void run(const ModuleString& modules) {
+    for (std::size_t i = 0; i < modules.size(); ++i) {
+      interpret(modules.symbol(i), modules.parameters(i), modules.generation(i),
+                0);
+    }
+  }
+
+  Skeleton finish() {
+    skeleton_.degenerate_polygons += polygons_.size();
+    polygons_.clear();
+    return std::move(skeleton_);
+  }
+
+ private:
+  void interpret(SymbolId symbol, std::span<const double> params,
+                 std::uint32_t generation, int depth) {
+    if (depth < settings_.maximum_depth && homomorphisms_.has_rules(symbol)) {
+      if (const Production* rule =
+              homomorphisms_.first_applicable(symbol, params)) {
+        std::vector<double>& values = buffers_[static_cast<std::size_t>(depth)];
+        rule->successor.instantiate(params, values);
+        const auto& begins = rule->successor.parameter_begins();
+        const auto& symbols = rule->successor.symbols();
+        for (std::size_t k = 0; k < symbols.size(); ++k) {
+          // `values` belongs to this depth; deeper levels use other buffers.
+          interpret(symbols[k],
+                    std::span<const double>(values).subspan(
+                        begins[k], begins[k + 1] - begins[k]),
+                    generation, depth + 1);
+        }
+        return;
+      }
+    }
+    execute(grammar_.commands[symbol], params, generation);
+  }
+
+  double angle(std::span<const double> params) const {
+    return params.empty() ? state_.angle_deg : params[0];
+  }
+
+  double generation_width(double width, std::uint32_t generation) const {
+    return std::max(0.0, width - settings_.width_decrement_per_generation *
+                                     settings_.width_scale * generation);
+  }
+
+  void execute(TurtleCommand command, std::span<const double> params,
+               std::uint32_t generation) {
+    Turtle& turtle = state_.turtle;
+    switch (command) {
+      case TurtleCommand::None:
+      case TurtleCommand::Cut:
+        return;
+      case TurtleCommand::Draw:
+        if (!polygons_.empty()) {
+          turtle.move(params.empty() ? state_.step : params[0]);
+          add_vertex();
+          return;
+        }
+        draw(params, generation);
+        return;
+      case TurtleCommand::DrawNoVertex:
+        draw(params, generation);
+        return;
+      case TurtleCommand::Move:
+        turtle.move(params.empty() ? state_.step : params[0]);
+        state_.last_segment = -1;
+        add_vertex();
+        return;
+      case TurtleCommand::MoveNoVertex:
+        turtle.move(params.empty() ? state_.step : params[0]);
+        state_.last_segment = -1;
+        return;
+      case TurtleCommand::TurnLeft:
+        turtle.turn(angle(params));
+        return;
+      case TurtleCommand::TurnRight:
+        turtle.turn(-angle(params));
+        return;
+      case TurtleCommand::PitchDown:
+        turtle.pitch(angle(params));
+        return;
+      case TurtleCommand::PitchUp:
+        turtle.pitch(-angle(params));
+        return;
+      case TurtleCommand::RollRight:
+        turtle.roll(roll_sign_ * angle(params));
+        return;
+      case TurtleCommand::RollLeft:
+        turtle.roll(-roll_sign_ * angle(params));
+        return;
+      case TurtleCommand::TurnAround:
+        turtle.turn_around();
+        return;
+      case TurtleCommand::RollToVertical:
+        turtle.roll_to_vertical();
+        return;
+      case TurtleCommand::Push:
+        stack_.push_back(state_);
+        return;
+      case TurtleCommand::Pop:
+        // Successors are balanced, so a pop always has its push.
+        if (!stack_.empty()) {
+          state_ = stack_.back();
+          stack_.pop_back();
+        }
+        return;
+      case TurtleCommand::PolygonBegin:
+        polygons_.push_back(
+            Polygon{{turtle.position()}, state_.color, state_.last_segment});
+        return;
+      case TurtleCommand::PolygonVertex:
+        add_vertex();
+        return;
+      case TurtleCommand::PolygonEnd:
+        close_polygon();
+        return;
+      case TurtleCommand::Width:
+        if (!params.empty()) {
+          state_.width = std::max(0.0, params[0] * settings_.width_scale);
+        } else if (settings_.width_increment) {
+          state_.width =
+              std::max(0.0, state_.width - *settings_.width_increment *
+                                               settings_.width_scale);
+        } else {
+          state_.width *= settings_.width_factor;
+        }
+        return;
+      case TurtleCommand::ColorNext:
+        state_.color =
+            params.empty() ? state_.color + 1 : static_cast<int>(params[0]);
+        return;
+      case TurtleCommand::ColorPrevious:
+        state_.color = params.empty() ? std::max(0, state_.color - 1)
+                                      : static_cast<int>(params[0]);
+        return;
+      case TurtleCommand::SetTropism:
+        state_.tropism = glm::dvec3(params[0], params[1], params[2]);
+        return;
+      case TurtleCommand::SetElasticity:
+        state_.elasticity = params[0];
+        return;
+    }
+  }
+
+  void draw(std::span<const double> params, std::uint32_t generation) {
+    Turtle& turtle = state_.turtle;
+    const double length = params.empty() ? state_.step : params[0];
+    const glm::dvec3 p0 = turtle.position();
+    turtle.move(length);
+    const double start = generation_width(state_.width, generation);
+    if (params.size() > 1) {
+      state_.width = std::max(0.0, params[1] * settings_.width_scale);
+    }
+    if (length != 0.0) {
+      skeleton_.segments.push_back(
+          Segment{p0, turtle.position(), start,
+                  generation_width(state_.width, generation), state_.color,
+                  state_.last_segment});
+      state_.last_segment =
+          static_cast<std::int32_t>(skeleton_.segments.size() - 1);
+    }
+    if (state_.elasticity != 0.0) {
+      turtle.bend(state_.tropism, state_.elasticity);
+    }
+  }
+
+  void add_vertex() {
+    if (polygons_.empty()) return;
+    auto& points = polygons_.back().points;
+    const glm::dvec3& p = state_.turtle.position();
+    if (points.empty() || !is_same_point(points.back(), p)) {
+      points.push_back(p);
+    }
+  }
+
+  bool is_same_point(const glm::dvec3& a, const glm::dvec3& b) const {
+    return glm::length(a - b) <= 1e-9 * std::max(1.0, std::fabs(state_.step));
+  }
+
+  void close_polygon() {
+    if (polygons_.empty()) return;
+    Polygon polygon = std::move(polygons_.back());
+    polygons_.pop_back();
+    auto& points = polygon.points;
+    if (points.size() > 1 && is_same_point(points.front(), points.back())) {
+      points.pop_back();
+    }
+    if (points.size() < 3) {
+      ++skeleton_.degenerate_polygons;
+      return;
+    }
+    skeleton_.polygons.push_back(std::move(polygon));
+  }
+
+  const Grammar& grammar_;
+  const Settings& settings_;
+  RuleIndex homomorphisms_;
+  double roll_sign_;
+  TurtleState state_;
+  std::vector<TurtleState> stack_;
+  std::vector<Polygon> polygons_;  // open ones, innermost last
+  std::vector<std::vector<double>> buffers_;
+  Skeleton skeleton_;
+};
+
+}  // namespace
+
+Skeleton interpret(const Grammar& grammar, const DerivationOptions& derivation,
+                   const InterpretOptions& options) {
+  Derivation d(grammar, derivation);
+  Interpreter interpreter(grammar, options);
+  if (d.prediction()) {
+    interpreter.reserve(static_cast<std::size_t>(
+        std::min(d.prediction()->segments,
+                 static_cast<double>(derivation.max_segments))));
+  }
+  ModuleString chunk;
+  while (d.next(chunk)) interpreter.run(chunk);
+  return interpreter.finish();
+}
+
+Skeleton interpret_string(const Grammar& grammar, const ModuleString& modules,
+                          const InterpretOptions& options) {
+  Interpreter interpreter(grammar, options);
+  interpreter.run(modules);
+  return interpreter.finish();
+}
+
+}  // namespace lsys

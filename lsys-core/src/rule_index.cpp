@@ -1,0 +1,34 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#include "rule_index.hpp"
+
+namespace lsys {
+
+RuleIndex::RuleIndex(const std::vector<Production>& rules,
+                     std::size_t alphabet_size)
+    : by_symbol_(alphabet_size), only_(alphabet_size, nullptr) {
+  for (const Production& rule : rules) {
+    by_symbol_[rule.predecessor.symbol].push_back(&rule);
+  }
+  for (std::size_t s = 0; s < alphabet_size; ++s) {
+    const auto& list = by_symbol_[s];
+    if (list.size() == 1 && !list[0]->condition && !list[0]->probability &&
+        !list[0]->is_context_sensitive()) {
+      only_[s] = list[0];
+    }
+  }
+}
+
+const Production* RuleIndex::first_applicable(
+    SymbolId symbol, std::span<const double> parameters) const {
+  for (const Production* rule : by_symbol_[symbol]) {
+    if (rule->predecessor.parameter_count ==
+            static_cast<int>(parameters.size()) &&
+        condition_holds(*rule, parameters)) {
+      return rule;
+    }
+  }
+  return nullptr;
+}
+
+}  // namespace lsys

@@ -1,0 +1,51 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "lsys/grammar.hpp"
+
+namespace lsys {
+
+/// The productions of one kind (productions, decompositions or
+/// homomorphisms) indexed by predecessor symbol, in file order.
+class RuleIndex {
+ public:
+  RuleIndex(const std::vector<Production>& rules, std::size_t alphabet_size);
+
+  /// The rules whose predecessor is `symbol`, in file order.
+  [[nodiscard]] std::span<const Production* const> rules_for(
+      SymbolId symbol) const noexcept {
+    return by_symbol_[symbol];
+  }
+  /// True if some rule rewrites `symbol`.
+  [[nodiscard]] bool has_rules(SymbolId symbol) const noexcept {
+    return !by_symbol_[symbol].empty();
+  }
+  /// The only rule of `symbol` when it is unconditional, deterministic and
+  /// context-free (the common D0L case), else null.
+  [[nodiscard]] const Production* only_rule(SymbolId symbol) const noexcept {
+    return only_[symbol];
+  }
+  /// The first context-free rule whose arity matches and whose condition
+  /// holds for these parameters, else null.
+  /// @throws ParseError when a condition fails to evaluate.
+  [[nodiscard]] const Production* first_applicable(
+      SymbolId symbol, std::span<const double> parameters) const;
+
+ private:
+  std::vector<std::vector<const Production*>> by_symbol_;
+  std::vector<const Production*> only_;
+};
+
+/// True if a rule's condition holds (or it has none).
+/// @throws ParseError when the condition fails to evaluate.
+[[nodiscard]] inline bool condition_holds(const Production& rule,
+                                          std::span<const double> slots) {
+  return !rule.condition || rule.condition->evaluate(slots) != 0.0;
+}
+
+}  // namespace lsys

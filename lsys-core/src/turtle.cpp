@@ -1,0 +1,95 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// The 3D turtle of ABOP §1.5 (p. 19) with ABOP's words, not its printed
+// matrices, where the two disagree; docs/turtle.md has the comparison.
+#include "lsys/turtle.hpp"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <numbers>
+
+namespace lsys {
+namespace {
+
+constexpr int kRotationsPerOrthonormalize = 64;
+
+}  // namespace
+
+SinCos sin_cos_deg(double angle_deg) noexcept {
+  const double quarter = angle_deg / 90.0;
+  if (quarter == std::floor(quarter) && std::fabs(quarter) < 1e15) {
+    switch (static_cast<long long>(std::fmod(quarter, 4.0) + 4.0) % 4) {
+      case 0:
+        return {0.0, 1.0};
+      case 1:
+        return {1.0, 0.0};
+      case 2:
+        return {0.0, -1.0};
+      default:
+        return {-1.0, 0.0};
+    }
+  }
+  const double radians = angle_deg * std::numbers::pi / 180.0;
+  return {std::sin(radians), std::cos(radians)};
+}
+
+void Turtle::rotate(glm::dvec3& a, glm::dvec3& b, double angle_deg) noexcept {
+  const SinCos sc = sin_cos_deg(angle_deg);
+  const glm::dvec3 a2 = a * sc.cos + b * sc.sin;
+  b = b * sc.cos - a * sc.sin;
+  a = a2;
+  if (++rotations_since_orthonormalize_ >= kRotationsPerOrthonormalize) {
+    orthonormalize();
+  }
+}
+
+void Turtle::turn(double angle_deg) noexcept {
+  rotate(heading_, left_, angle_deg);
+}
+
+void Turtle::pitch(double angle_deg) noexcept {
+  rotate(heading_, up_, -angle_deg);
+}
+
+void Turtle::roll(double angle_deg) noexcept { rotate(left_, up_, angle_deg); }
+
+void Turtle::turn_around() noexcept {
+  heading_ = -heading_;
+  left_ = -left_;
+}
+
+void Turtle::roll_to_vertical() noexcept {
+  const glm::dvec3 side = glm::cross(glm::dvec3(0.0, 0.0, 1.0), heading_);
+  const double length = glm::length(side);
+  if (length < 1e-12) return;
+  left_ = side / length;
+  up_ = glm::cross(heading_, left_);
+}
+
+void Turtle::bend(const glm::dvec3& tropism, double elasticity) noexcept {
+  const glm::dvec3 axis = glm::cross(heading_, tropism);
+  const double length = glm::length(axis);
+  if (length < 1e-12) return;
+  const double angle = elasticity * length;
+  const glm::dvec3 k = axis / length;
+  const double c = std::cos(angle);
+  const double s = std::sin(angle);
+  // Rodrigues' rotation of each frame vector about k.
+  const auto spin = [&](const glm::dvec3& v) {
+    return v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1.0 - c);
+  };
+  heading_ = spin(heading_);
+  left_ = spin(left_);
+  up_ = spin(up_);
+  orthonormalize();
+}
+
+void Turtle::orthonormalize() noexcept {
+  rotations_since_orthonormalize_ = 0;
+  heading_ = glm::normalize(heading_);
+  left_ = glm::normalize(left_ - glm::dot(left_, heading_) * heading_);
+  up_ = glm::cross(heading_, left_);
+}
+
+}  // namespace lsys

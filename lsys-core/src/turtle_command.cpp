@@ -1,0 +1,74 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#include "lsys/turtle_command.hpp"
+
+#include <array>
+#include <utility>
+
+namespace lsys {
+namespace {
+
+// ABOP p. 209 and the cpfg manual for the single characters; `∧` is how
+// seed 000 and typeset ABOP print `^`; `@v`, `@Tp`, `@Ts` are L-Py's and
+// cpfg's spellings.
+constexpr std::array<std::pair<std::string_view, TurtleCommand>, 27> kNames{{
+    {"F", TurtleCommand::Draw},           {"f", TurtleCommand::Move},
+    {"G", TurtleCommand::DrawNoVertex},   {"g", TurtleCommand::MoveNoVertex},
+    {"+", TurtleCommand::TurnLeft},       {"-", TurtleCommand::TurnRight},
+    {"&", TurtleCommand::PitchDown},      {"^", TurtleCommand::PitchUp},
+    {"\u2227", TurtleCommand::PitchUp},   {"/", TurtleCommand::RollRight},
+    {"\\", TurtleCommand::RollLeft},      {"|", TurtleCommand::TurnAround},
+    {"$", TurtleCommand::RollToVertical}, {"@v", TurtleCommand::RollToVertical},
+    {"[", TurtleCommand::Push},           {"]", TurtleCommand::Pop},
+    {"{", TurtleCommand::PolygonBegin},   {".", TurtleCommand::PolygonVertex},
+    {"}", TurtleCommand::PolygonEnd},     {"!", TurtleCommand::Width},
+    {"'", TurtleCommand::ColorNext},      {";", TurtleCommand::ColorNext},
+    {",", TurtleCommand::ColorPrevious},  {"%", TurtleCommand::Cut},
+    {"@Tp", TurtleCommand::SetTropism},   {"@Ts", TurtleCommand::SetElasticity},
+    {"\u2019", TurtleCommand::ColorNext},
+}};
+
+}  // namespace
+
+std::optional<TurtleCommand> builtin_command(std::string_view name) noexcept {
+  for (const auto& [spelling, command] : kNames) {
+    if (spelling == name) return command;
+  }
+  return std::nullopt;
+}
+
+int max_parameters(TurtleCommand command) noexcept {
+  switch (command) {
+    case TurtleCommand::None:
+      return 1 << 20;
+    case TurtleCommand::Draw:
+    case TurtleCommand::DrawNoVertex:
+      return 2;
+    case TurtleCommand::SetTropism:
+      return 3;
+    case TurtleCommand::TurnAround:
+    case TurtleCommand::RollToVertical:
+    case TurtleCommand::Push:
+    case TurtleCommand::Pop:
+    case TurtleCommand::PolygonBegin:
+    case TurtleCommand::PolygonVertex:
+    case TurtleCommand::PolygonEnd:
+    case TurtleCommand::Cut:
+      return 0;
+    default:
+      return 1;
+  }
+}
+
+int min_parameters(TurtleCommand command) noexcept {
+  switch (command) {
+    case TurtleCommand::SetTropism:
+      return 3;
+    case TurtleCommand::SetElasticity:
+      return 1;
+    default:
+      return 0;
+  }
+}
+
+}  // namespace lsys

@@ -1,0 +1,136 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#include <algorithm>
+#include <vector>
+
+#include "commands.hpp"
+#include "lsys/module_string.hpp"
+#include "lsys/parser.hpp"
+#include "lsys/source.hpp"
+#include "output.hpp"
+
+namespace lsolid::cli {
+namespace {
+
+void append_json_string(std::string& out, const std::string& text) {
+  out += '"';
+  for (const char c : text) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20U) {
+      static constexpr char kHex[] = "0123456789abcdef";
+      out += "\\u00";
+      out += kHex[(c >> 4) & 0xF];
+      out += kHex[c & 0xF];
+    } else {
+      out += c;
+    }
+  }
+  out += '"';
+}
+
+}  // namespace
+
+void add_grammar_options(CLI::App& command, GrammarInput& input,
+                         bool with_roll) {
+  command.add_option("FILE", input.file, "the .ls file")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command
+      .add_option("-n,--derivation-length", input.derivation_length,
+                  "derivation steps, overriding the file's n")
+      ->check(CLI::Range(0, 10000));
+  command.add_option("--seed", input.seed,
+                     "seed of stochastic productions, overriding the file's");
+  command
+      .add_option("--define", input.defines,
+                  "NAME=VALUE: set a constant, overriding #define")
+      ->allow_extra_args(false);
+  command
+      .add_option("--max-segments", input.max_segments,
+                  "refuse to draw more segments than this")
+      ->capture_default_str();
+  command
+      .add_option("--max-modules", input.max_modules,
+                  "refuse to derive longer strings than this")
+      ->capture_default_str();
+  if (with_roll) {
+    command
+        .add_option("--roll", input.roll,
+                    "which way / and \\ roll: lpfg (L-Py, default) or cpfg")
+        ->check(CLI::IsMember({"lpfg", "cpfg"}));
+  }
+}
+
+lsys::Grammar load_grammar(const GrammarInput& input) {
+  return lsys::parse_grammar(lsys::load_source(input.file),
+                             lsys::ParseOptions{.defines = input.defines});
+}
+
+lsys::DerivationOptions derivation_options(const GrammarInput& input) {
+  return {.derivation_length = input.derivation_length,
+          .seed = input.seed,
+          .max_segments = input.max_segments,
+          .max_modules = input.max_modules};
+}
+
+lsys::InterpretOptions interpret_options(const GrammarInput& input) {
+  lsys::InterpretOptions options;
+  if (input.roll) {
+    options.roll = *input.roll == "cpfg" ? lsys::RollConvention::Cpfg
+                                         : lsys::RollConvention::Lpfg;
+  }
+  return options;
+}
+
+void run_derive(const DeriveCommand& command) {
+  const lsys::Grammar grammar = load_grammar(command.input);
+  lsys::Derivation derivation(grammar, derivation_options(command.input));
+  Output out(stdout);
+  lsys::ModuleString chunk;
+  if (!command.stats) {
+    bool has_previous = false;
+    lsys::SymbolId previous = 0;
+    while (derivation.next(chunk)) {
+      for (std::size_t i = 0; i < chunk.size(); ++i) {
+        lsys::append_module_separated(out.text(), grammar.alphabet, chunk, i,
+                                      has_previous ? &previous : nullptr);
+        previous = chunk.symbol(i);
+        has_previous = true;
+      }
+      out.flush_if_large();
+    }
+    out.text() += '\n';
+    out.flush();
+    return;
+  }
+  std::vector<std::uint64_t> counts(grammar.alphabet.size(), 0);
+  std::uint64_t length = 0;
+  long long depth = 0;
+  long long max_depth = 0;
+  while (derivation.next(chunk)) {
+    length += chunk.size();
+    for (const lsys::SymbolId symbol : chunk.symbols()) {
+      ++counts[symbol];
+      if (symbol == lsys::kBranchOpen) max_depth = std::max(max_depth, ++depth);
+      if (symbol == lsys::kBranchClose) --depth;
+    }
+  }
+  std::vector<std::pair<std::string, std::uint64_t>> named;
+  for (lsys::SymbolId s = 0; s < counts.size(); ++s) {
+    if (counts[s] > 0) named.emplace_back(grammar.alphabet.name(s), counts[s]);
+  }
+  std::sort(named.begin(), named.end());
+  std::string& text = out.text();
+  text += "{\"length\": " + std::to_string(length) + ", \"modules\": {";
+  for (std::size_t i = 0; i < named.size(); ++i) {
+    if (i > 0) text += ", ";
+    append_json_string(text, named[i].first);
+    text += ": " + std::to_string(named[i].second);
+  }
+  text += "}, \"max_depth\": " + std::to_string(max_depth) + "}\n";
+  out.flush();
+}
+
+}  // namespace lsolid::cli

@@ -1,0 +1,77 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// The lsolid command line: a client of lsys-core and lsys-solid, and the one
+// place where errors become messages and exit codes (docs/cli.md).
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+
+#include "commands.hpp"
+#include "lsolid/errors.hpp"
+#include "lsys/diagnostic.hpp"
+
+namespace {
+
+constexpr int kExitInput = 2;
+constexpr int kExitGeometry = 3;
+constexpr int kExitIo = 4;
+
+constexpr const char* kExamples = R"(
+Examples:
+  lsolid derive printables/hilbert-cube.ls -n 2
+  lsolid derive printables/abop-1.25-bush.ls --stats
+  lsolid skeleton printables/honda-2.1a.ls --json
+  lsolid skeleton tree.ls --define r2=0.7 --seed 7 --roll cpfg
+
+Exit codes: 0 success, 2 bad input, 3 geometry failure, 4 I/O failure.
+Documentation: docs/cli.md, docs/language.md, docs/turtle.md.)";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"lsolid turns Lindenmayer systems into 3D-printable solids."};
+  app.footer(kExamples);
+  app.set_version_flag("--version", "lsolid " LSOLID_VERSION);
+  app.require_subcommand(1);
+
+  lsolid::cli::DeriveCommand derive;
+  CLI::App* derive_app =
+      app.add_subcommand("derive", "print the derived string of an L-system");
+  lsolid::cli::add_grammar_options(*derive_app, derive.input, false);
+  derive_app->add_flag("--stats", derive.stats,
+                       "print {\"length\", \"modules\", \"max_depth\"} as JSON "
+                       "instead of the string");
+
+  lsolid::cli::SkeletonCommand skeleton;
+  CLI::App* skeleton_app = app.add_subcommand(
+      "skeleton", "print the turtle's segments and polygons (model units)");
+  lsolid::cli::add_grammar_options(*skeleton_app, skeleton.input, true);
+  skeleton_app->add_flag("--json", skeleton.json,
+                         "print every segment and polygon as JSON");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : kExitInput;
+  }
+
+  try {
+    if (derive_app->parsed()) lsolid::cli::run_derive(derive);
+    if (skeleton_app->parsed()) lsolid::cli::run_skeleton(skeleton);
+  } catch (const lsys::ParseError& e) {
+    std::fputs(lsys::format_diagnostic(e.diagnostic()).c_str(), stderr);
+    return kExitInput;
+  } catch (const lsolid::GeometryError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return kExitGeometry;
+  } catch (const lsolid::IoError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return kExitIo;
+  } catch (const std::bad_alloc&) {
+    std::fputs("error: out of memory\n", stderr);
+    return kExitGeometry;
+  }
+  return 0;
+}

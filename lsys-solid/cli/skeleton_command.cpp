@@ -1,0 +1,103 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <glm/common.hpp>
+#include <limits>
+
+#include "commands.hpp"
+#include "lsys/module_string.hpp"
+#include "output.hpp"
+
+namespace lsolid::cli {
+namespace {
+
+void append_point(std::string& out, const glm::dvec3& p) {
+  out += '[';
+  lsys::append_number(out, p.x);
+  out += ',';
+  lsys::append_number(out, p.y);
+  out += ',';
+  lsys::append_number(out, p.z);
+  out += ']';
+}
+
+void write_json(const lsys::Skeleton& skeleton, Output& out) {
+  std::string& text = out.text();
+  text += "{\"units\": \"model\", \"segments\": [";
+  for (std::size_t i = 0; i < skeleton.segments.size(); ++i) {
+    const lsys::Segment& s = skeleton.segments[i];
+    text += i == 0 ? "\n" : ",\n";
+    text += "{\"p0\": ";
+    append_point(text, s.p0);
+    text += ", \"p1\": ";
+    append_point(text, s.p1);
+    text += ", \"r0\": ";
+    lsys::append_number(text, s.start_diameter / 2.0);
+    text += ", \"r1\": ";
+    lsys::append_number(text, s.end_diameter / 2.0);
+    text += ", \"color\": " + std::to_string(s.color) + "}";
+    out.flush_if_large();
+  }
+  text += "],\n\"polygons\": [";
+  for (std::size_t i = 0; i < skeleton.polygons.size(); ++i) {
+    const lsys::Polygon& polygon = skeleton.polygons[i];
+    text += i == 0 ? "\n" : ",\n";
+    text += "{\"points\": [";
+    for (std::size_t k = 0; k < polygon.points.size(); ++k) {
+      if (k > 0) text += ", ";
+      append_point(text, polygon.points[k]);
+    }
+    text += "], \"color\": " + std::to_string(polygon.color) + "}";
+    out.flush_if_large();
+  }
+  text += "]}\n";
+}
+
+void write_summary(const lsys::Skeleton& skeleton, Output& out) {
+  glm::dvec3 low(std::numeric_limits<double>::infinity());
+  glm::dvec3 high(-std::numeric_limits<double>::infinity());
+  const auto grow = [&](const glm::dvec3& p) {
+    low = glm::min(low, p);
+    high = glm::max(high, p);
+  };
+  for (const lsys::Segment& s : skeleton.segments) {
+    grow(s.p0);
+    grow(s.p1);
+  }
+  for (const lsys::Polygon& polygon : skeleton.polygons) {
+    for (const glm::dvec3& p : polygon.points) grow(p);
+  }
+  std::string& text = out.text();
+  text += fmt::format("segments: {}\npolygons: {}\n", skeleton.segments.size(),
+                      skeleton.polygons.size());
+  if (skeleton.degenerate_polygons > 0) {
+    text += fmt::format("degenerate polygons dropped: {}\n",
+                        skeleton.degenerate_polygons);
+  }
+  if (low.x <= high.x) {
+    text += fmt::format(
+        "bounds: [{:.6g}, {:.6g}, {:.6g}] to [{:.6g}, {:.6g}, {:.6g}] model "
+        "units\n",
+        low.x, low.y, low.z, high.x, high.y, high.z);
+  }
+}
+
+}  // namespace
+
+void run_skeleton(const SkeletonCommand& command) {
+  const lsys::Grammar grammar = load_grammar(command.input);
+  const lsys::Skeleton skeleton =
+      lsys::interpret(grammar, derivation_options(command.input),
+                      interpret_options(command.input));
+  Output out(stdout);
+  if (command.json) {
+    write_json(skeleton, out);
+  } else {
+    write_summary(skeleton, out);
+  }
+  out.flush();
+}
+
+}  // namespace lsolid::cli

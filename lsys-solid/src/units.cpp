@@ -1,0 +1,41 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#include "lsolid/units.hpp"
+
+#include <array>
+#include <charconv>
+#include <utility>
+
+#include "lsys/diagnostic.hpp"
+
+namespace lsolid {
+
+double parse_length_mm(std::string_view text, const std::string& what) {
+  const lsys::SourceFile source(what, std::string(text));
+  std::size_t begin = 0;
+  while (begin < text.size() && text[begin] == ' ') ++begin;
+  double value = 0.0;
+  const auto [end, ec] =
+      std::from_chars(text.data() + begin, text.data() + text.size(), value);
+  if (ec != std::errc()) {
+    throw lsys::error_at(source, begin, "expected a length such as 0.8mm");
+  }
+  auto unit_at = static_cast<std::size_t>(end - text.data());
+  while (unit_at < text.size() && text[unit_at] == ' ') ++unit_at;
+  std::string_view unit = text.substr(unit_at);
+  while (!unit.empty() && unit.back() == ' ') unit.remove_suffix(1);
+  static constexpr std::array<std::pair<std::string_view, double>, 4> kUnits{
+      {{"", 1.0}, {"mm", 1.0}, {"cm", 10.0}, {"in", 25.4}}};
+  for (const auto& [name, factor] : kUnits) {
+    if (unit != name) continue;
+    if (!(value > 0.0)) {
+      throw lsys::error_at(source, begin, "a length must be positive");
+    }
+    return value * factor;
+  }
+  throw lsys::error_at(
+      source, unit_at,
+      "unknown unit '" + std::string(unit) + "': use mm, cm or in");
+}
+
+}  // namespace lsolid

@@ -1,0 +1,12 @@
+// A three-dimensional bush with leaves, ABOP fig. 1.25 (p. 26).
+// Source: seed 000 ("Modelowanie drzewa") and seed 002 (the shrub of
+// "Digital Design of Nature", fig. 5.5). `!` thins each new branch by the
+// width factor; `'` steps the colour (stem 0, leaves 3 and on).
+n=7, δ=22.5°
+width: 0.3
+width factor: 0.75
+ω: A
+p1: A → [&FL!A]/////'[&FL!A]///////'[&FL!A]
+p2: F → S/////F
+p3: S → FL
+p4: L → ['''^^{-f+f+f-|-f+f+f}]

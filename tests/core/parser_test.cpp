@@ -1,0 +1,268 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#include "lsys/parser.hpp"
+
+#include <gtest/gtest.h>
+
+#include "support/core_helpers.hpp"
+
+namespace lsys {
+namespace {
+
+using testing::derived;
+using testing::located_error;
+using testing::parse;
+using testing::parse_error;
+
+TEST(Parser, AcceptsEveryArrow) {
+  for (const char* arrow : {"\u2192", "->", "-->", "::=", "=", "\u27F6"}) {
+    const std::string text = std::string("axiom: F\nF ") + arrow + " F+F\nn=1";
+    EXPECT_EQ(derived(text), "F+F") << arrow;
+  }
+}
+
+TEST(Parser, AcceptsEveryAxiomNotation) {
+  for (const char* axiom :
+       {"\u03C9: X", "\u03C9 : X", "axiom: X", "Axiom: X", "premise: X", "X"}) {
+    const std::string text = std::string(axiom) + "\nX -> F\nn=1";
+    EXPECT_EQ(derived(text), "F") << axiom;
+  }
+}
+
+TEST(Parser, AcceptsEveryDerivationLengthAndAngleNotation) {
+  EXPECT_EQ(parse("n=7\nF").settings.derivation_length, 7);
+  EXPECT_EQ(parse("n = 7\nF").settings.derivation_length, 7);
+  EXPECT_EQ(parse("derivation length: 7\nF").settings.derivation_length, 7);
+  EXPECT_EQ(parse("\u03B4=22.5\u00B0\nF").settings.angle_deg, 22.5);
+  EXPECT_EQ(parse("delta = 22.5\nF").settings.angle_deg, 22.5);
+  EXPECT_EQ(parse("angle: 22.5\nF").settings.angle_deg, 22.5);
+  EXPECT_EQ(parse("angle factor: 16\nF").settings.angle_deg, 22.5);
+}
+
+TEST(Parser, ReadsSeveralSettingsOnOneLine) {
+  const Grammar g = parse("n=2, \u03B4=90\u00B0, tropism: 0, 1, -1\nF");
+  EXPECT_EQ(g.settings.derivation_length, 2);
+  EXPECT_EQ(g.settings.angle_deg, 90.0);
+  EXPECT_EQ(g.settings.tropism, glm::dvec3(0.0, 1.0, -1.0));
+}
+
+TEST(Parser, ReadsLabelsAndConditions) {
+  const Grammar g = parse(
+      "\u03C9: A(1)\np1: A(x) : x < 2 \u2192 A(x+1)\np_2 : A(x) : * \u2192 "
+      "B\n");
+  ASSERT_EQ(g.productions.size(), 2U);
+  EXPECT_TRUE(g.productions[0].condition.has_value());
+  EXPECT_FALSE(g.productions[1].condition.has_value());
+}
+
+TEST(Parser, StripsBlockCommentsAnywhereAndLineComments) {
+  const Grammar g = parse(
+      "#define a 45 /* branching angle */\n"
+      "// a comment line\n"
+      "# another comment line\n"
+      "n=/* inline */1\n"
+      "\u03C9: F\n"
+      "/* a comment\n"
+      "   over two lines */\n"
+      "F \u2192 F[+(a)F]\n");
+  EXPECT_EQ(g.constants.at("a"), 45.0);
+  EXPECT_EQ(to_string(derive(g), g.alphabet), "F[+(45)F]");
+}
+
+TEST(Parser, NeverReadsDoubleSlashInsideAProductionAsAComment) {
+  // The Hilbert rules end with two rolls (seed 000).
+  EXPECT_EQ(derived("A\nA \u2192 F+B//\nn=1"), "F+B//");
+}
+
+TEST(Parser, TokenisesDeclaredMultiCharacterNamesByLongestMatch) {
+  const Grammar g = parse(
+      "\u03C9: plant\nplant \u2192 internode[plant]seg\n"
+      "seg \u2192 segFseg\ninternode \u2192 internode\nn=2\n");
+  const ModuleString s = derive(g);
+  EXPECT_EQ(to_string(s, g.alphabet),
+            "internode [ internode [ plant ] seg ] seg F seg");
+  EXPECT_EQ(s.size(), 11U);
+  EXPECT_FALSE(g.alphabet.find("p").has_value());
+  // Undeclared words are single-character modules.
+  const Grammar plain = parse("\u03C9: leaf\n");
+  EXPECT_EQ(derive(plain).size(), 4U);
+}
+
+TEST(Parser, DeclaresNamesWithModuleLines) {
+  const Grammar g = parse("module leaf, bud(x)\n\u03C9: F leaf bud(2)\n");
+  EXPECT_EQ(to_string(derive(g, {.derivation_length = 0}), g.alphabet),
+            "F leaf bud(2)");
+}
+
+TEST(Parser, JoinsIndentedContinuationLines) {
+  EXPECT_EQ(derived("\u03C9: A\nA \u2192 F[+F]\n   F[-F]\n\tF\nn=1"),
+            "F[+F]F[-F]F");
+}
+
+TEST(Parser, SplitsProductionsSharedOnOneLine) {
+  EXPECT_EQ(derived("\u03C9: A\nA = f[^B]>>A, B = f[-B]B\nn=2"),
+            "f[^f[-B]B]>>f[^B]>>A");
+}
+
+TEST(Parser, ReadsStochasticProductionsInBothForms) {
+  const Grammar abop =
+      parse("\u03C9: F\nF -(0.33)\u2192 F[+F]F\nF -(.67)-> F\n");
+  ASSERT_EQ(abop.productions.size(), 2U);
+  EXPECT_DOUBLE_EQ(abop.productions[0].probability->constant_value(), 0.33);
+  EXPECT_EQ(abop.productions[0].successor.size(), 6U);
+  const Grammar cpfg =
+      parse("\u03C9: F\nF --> F[+F]F : 0.33\nF --> F : 1-0.33\n");
+  EXPECT_DOUBLE_EQ(cpfg.productions[1].probability->constant_value(), 0.67);
+  EXPECT_EQ(cpfg.productions[0].successor.size(), 6U);
+}
+
+TEST(Parser, ReadsContextsIncludingBranchesOnTheRight) {
+  const Grammar g = parse("\u03C9: S\nBC < S > G[H]M \u2192 Z\n");
+  const Production& p = g.productions.at(0);
+  EXPECT_EQ(p.left_context.size(), 2U);
+  EXPECT_EQ(p.right_context.size(), 5U);
+  EXPECT_TRUE(p.is_context_sensitive());
+}
+
+TEST(Parser, BindsContextParametersInSlotOrder) {
+  EXPECT_EQ(derived("\u03C9: A(1)B(2)C(3)\nA(a) < B(b) > C(c) \u2192 "
+                    "B(a*100+b*10+c)\nn=1"),
+            "A(1)B(123)C(3)");
+}
+
+TEST(Parser, ReadsSectionsForDecompositionAndHomomorphism) {
+  const Grammar g = parse(
+      "\u03C9: A\nA \u2192 AB\ndecomposition:\nB \u2192 CD\nhomomorphism:\n"
+      "maximum depth: 2\nC \u2192 F\nendlsystem\n");
+  EXPECT_EQ(g.productions.size(), 1U);
+  EXPECT_EQ(g.decompositions.size(), 1U);
+  EXPECT_EQ(g.homomorphisms.size(), 1U);
+  EXPECT_EQ(g.settings.maximum_depth, 2);
+}
+
+TEST(Parser, AppliesAliasesToTheTurtleOnly) {
+  const Grammar g = parse(
+      "aliases:\n  f = F   /* the blog draws with f */\n  v=& <=\\ >=/\n"
+      "productions:\n\u03C9: fA\nA = f>A\n");
+  EXPECT_EQ(g.commands[*g.alphabet.find("f")], TurtleCommand::Draw);
+  EXPECT_EQ(g.commands[*g.alphabet.find("v")], TurtleCommand::PitchDown);
+  EXPECT_EQ(g.commands[*g.alphabet.find("<")], TurtleCommand::RollLeft);
+  EXPECT_EQ(g.commands[*g.alphabet.find(">")], TurtleCommand::RollRight);
+  EXPECT_EQ(g.commands[*g.alphabet.find("A")], TurtleCommand::None);
+  EXPECT_EQ(g.productions.size(), 1U);
+}
+
+TEST(Parser, AcceptsTheBlogsOwnSettingNames) {
+  const Grammar g = parse(
+      "Angle : 25\nIterations: 6\nBranch radius: 0.02\n"
+      "Branch radius reduction: 0.0015\nBranch length (height): 0.15\n"
+      "Initial value : fffffA\nProduction rules : A = f[++Al][--Al]>>>A\n");
+  EXPECT_EQ(g.settings.angle_deg, 25.0);
+  EXPECT_EQ(g.settings.derivation_length, 6);
+  EXPECT_DOUBLE_EQ(g.settings.initial_width, 0.04);
+  EXPECT_DOUBLE_EQ(g.settings.width_decrement_per_generation, 0.003);
+  EXPECT_EQ(g.settings.step, 0.15);
+  EXPECT_EQ(g.productions.size(), 1U);
+}
+
+TEST(Parser, CommandLineDefinesOverrideTheFile) {
+  const Grammar g = parse("#define a 45\n#define b a*2\n\u03C9: +(b)",
+                          ParseOptions{.defines = {"a=10", "extra=3"}});
+  EXPECT_EQ(g.constants.at("a"), 10.0);
+  EXPECT_EQ(g.constants.at("b"), 20.0);
+  EXPECT_EQ(g.constants.at("extra"), 3.0);
+}
+
+TEST(Parser, PassesClientSettingsThrough) {
+  const Grammar g = parse("wall: 0.8mm\nheight = 120 mm\n\u03C9: F",
+                          ParseOptions{.extra_settings = {"wall", "height"}});
+  ASSERT_EQ(g.extra_settings.size(), 2U);
+  EXPECT_EQ(g.extra_settings[0].key, "wall");
+  EXPECT_EQ(g.extra_settings[0].value, "0.8mm");
+  EXPECT_EQ(g.extra_settings[1].value, "120 mm");
+}
+
+TEST(Parser, ReadsEmptySuccessors) {
+  EXPECT_EQ(derived("\u03C9: AB\nA \u2192 *\nB \u2192 \u03B5\nn=1"), "");
+  EXPECT_EQ(derived("\u03C9: AB\nA \u2192\nn=1"), "B");
+}
+
+TEST(Parser, ReadsIgnoreAndConsiderLists) {
+  EXPECT_EQ(parse("#ignore: + -\n\u03C9: F").settings.ignore.size(), 2U);
+  EXPECT_EQ(parse("consider: ABC\n\u03C9: F").settings.consider.size(), 3U);
+}
+
+TEST(Parser, ReportsEachMistakeWithItsOwnMessage) {
+  EXPECT_EQ(located_error("angel: 20\nF"), "1:1: unknown setting 'angel'");
+  EXPECT_EQ(located_error("angel = 20\nF"), "1:1: unknown setting 'angel'");
+  EXPECT_EQ(located_error("\u03C9: F\nF F[+F]F"),
+            "2:1: missing arrow: a production needs '\u2192' or '->' "
+            "between predecessor and successor");
+  EXPECT_EQ(located_error("\u03C9: F\nF \u2192 F]F"),
+            "2:6: unbalanced ']': no '[' before it");
+  EXPECT_EQ(located_error("\u03C9: F\nF \u2192 F[F"),
+            "2:6: unclosed '[': no ']' after it");
+  EXPECT_EQ(located_error("\u03C9: A(1)\nA(x) \u2192 A(x, 1)"),
+            "2:8: wrong parameter count: 'A' takes 1 parameter (as on line "
+            "1), here 2");
+  EXPECT_EQ(located_error("\u03C9: +(1, 2)"),
+            "1:4: wrong parameter count: '+' takes at most 1 parameter, "
+            "here 2");
+  EXPECT_EQ(located_error("\u03C9: A(1)\nA(x) \u2192 A(y)"),
+            "2:10: undefined name 'y'");
+  EXPECT_EQ(located_error("#define a 1/0\n\u03C9: F"),
+            "1:12: division by zero");
+  EXPECT_EQ(located_error("n = 1.2.3\n\u03C9: F"), "1:5: bad number '1.2.3'");
+  EXPECT_EQ(located_error("#define a 1\n#define a 2\n\u03C9: F"),
+            "2:9: duplicate definition of 'a' (first defined on line 1)");
+  EXPECT_EQ(located_error("\u03C9: A(1,1)\nA(x, x) \u2192 F"),
+            "2:6: duplicate definition of parameter 'x'");
+  EXPECT_EQ(located_error("n=1\nn=2\n\u03C9: F"),
+            "2:1: duplicate setting 'n' (first set on line 1)");
+  EXPECT_EQ(located_error("\u03C9: F\n/* open"),
+            "2:1: unterminated comment '/*'");
+  EXPECT_EQ(located_error("\u03C9: F\nA(1) \u2192 F"),
+            "2:3: a parameter of a predecessor or context must be a name, "
+            "not '1'");
+  EXPECT_EQ(located_error("\u03C9: F\nA B \u2192 F"),
+            "2:1: the predecessor must be a single module");
+  EXPECT_EQ(located_error("\u03C9: F\n[ \u2192 F"),
+            "2:1: brackets cannot be rewritten");
+  EXPECT_EQ(located_error("\u03C9: F\nA[B] < C \u2192 F"),
+            "2:2: a left context cannot contain brackets");
+  EXPECT_EQ(located_error("\u03C9: F\nF \u2192 F(1"), "2:6: unclosed '('");
+  EXPECT_EQ(located_error("\u03C9: F\nF \u2192 (1)"),
+            "2:5: unexpected '(': parameters follow a module name, as in F(1)");
+  EXPECT_EQ(located_error("#include \"x\"\n\u03C9: F"),
+            "1:1: #include is not supported");
+  EXPECT_EQ(located_error("#pragma once\n\u03C9: F"),
+            "1:1: unknown directive '#pragma'");
+  EXPECT_EQ(located_error("aliases: f=Q\n\u03C9: F"),
+            "1:12: unknown turtle symbol 'Q'");
+  EXPECT_EQ(located_error("aliases: f=F f=G\n\u03C9: F"),
+            "1:14: duplicate alias for 'f'");
+  EXPECT_EQ(located_error("\u03C9: F\nF -(-1)\u2192 G"),
+            "2:5: a probability cannot be negative");
+  EXPECT_EQ(located_error("roll: left\n\u03C9: F"),
+            "1:7: expected 'lpfg' or 'cpfg'");
+  EXPECT_EQ(located_error("n: -1\n\u03C9: F"),
+            "1:4: expected a whole number from 0 to 10000");
+  EXPECT_EQ(located_error("tropism: 0, 1\n\u03C9: F"),
+            "1:10: expected three numbers x, y, z");
+  EXPECT_EQ(located_error("width increment: 1\nwidth factor: 0.5\n\u03C9: F"),
+            "2:1: give either 'width increment' or 'width factor', not both");
+  EXPECT_EQ(located_error("\u03C9: F\ndecomposition:\nA < B \u2192 C"),
+            "3:5: a decomposition rule cannot have a context");
+  EXPECT_EQ(located_error("\u03C9: F\nhomomorphism:\nA -(0.5)\u2192 C"),
+            "3:5: a homomorphism rule cannot be stochastic");
+  EXPECT_EQ(located_error("\u03C9: F\n\u03C9: G"),
+            "2:1: duplicate setting '\u03C9' (first set on line 1)");
+  EXPECT_EQ(located_error("F\nF \u2192 G\naxiom: G"),
+            "3:1: duplicate axiom (the first is on line 1)");
+  EXPECT_EQ(parse_error("F \u2192 G"),
+            "no axiom: give one as 'axiom: F', '\u03C9: F' or a line of "
+            "modules before the productions");
+}
+
+}  // namespace
+}  // namespace lsys

@@ -1,0 +1,3 @@
+#define a 45 /* branching angle */
+#define a 30
+ω: +(a)F

@@ -1,0 +1,2 @@
+ω: F
+F → FF /* unfinished

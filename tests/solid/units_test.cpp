@@ -1,0 +1,34 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#include "lsolid/units.hpp"
+
+#include <gtest/gtest.h>
+
+#include "lsys/diagnostic.hpp"
+
+namespace lsolid {
+namespace {
+
+TEST(Units, ReadsMillimetresCentimetresAndInches) {
+  EXPECT_EQ(parse_length_mm("0.8mm", "--wall"), 0.8);
+  EXPECT_EQ(parse_length_mm("12", "--height"), 12.0);
+  EXPECT_EQ(parse_length_mm("2 cm", "--size"), 20.0);
+  EXPECT_DOUBLE_EQ(parse_length_mm("1in", "--size"), 25.4);
+}
+
+TEST(Units, RejectsBadLengthsWithTheirColumn) {
+  try {
+    (void)parse_length_mm("0.8 ft", "--wall");
+    FAIL() << "no error";
+  } catch (const lsys::ParseError& e) {
+    EXPECT_EQ(e.diagnostic().file, "--wall");
+    EXPECT_EQ(e.diagnostic().column, 5);
+    EXPECT_EQ(e.diagnostic().message, "unknown unit 'ft': use mm, cm or in");
+  }
+  EXPECT_THROW((void)parse_length_mm("mm", "--wall"), lsys::ParseError);
+  EXPECT_THROW((void)parse_length_mm("-1mm", "--wall"), lsys::ParseError);
+  EXPECT_THROW((void)parse_length_mm("0", "--wall"), lsys::ParseError);
+}
+
+}  // namespace
+}  // namespace lsolid

@@ -1,0 +1,61 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "lsys/derivation.hpp"
+#include "lsys/diagnostic.hpp"
+#include "lsys/interpretation.hpp"
+#include "lsys/parser.hpp"
+
+namespace lsys::testing {
+
+/// The checkout's root, for printables/ and tests/data/.
+inline std::filesystem::path source_dir() { return LSOLID_SOURCE_DIR; }
+
+/// Parses `.ls` text named `test.ls`.
+inline Grammar parse(std::string_view text, ParseOptions options = {}) {
+  return parse_grammar_text(text, options, "test.ls");
+}
+
+/// Parses a file of the checkout (relative to its root).
+inline Grammar parse_file(const std::string& relative,
+                          ParseOptions options = {}) {
+  return parse_grammar(load_source(source_dir() / relative), options);
+}
+
+/// The derived string of `.ls` text after n steps (the file's n if none).
+inline std::string derived(std::string_view text,
+                           std::optional<int> n = std::nullopt) {
+  const Grammar g = parse(text);
+  return to_string(derive(g, {.derivation_length = n}), g.alphabet);
+}
+
+/// The error message (without location) that parsing `.ls` text raises, or
+/// "no error".
+inline std::string parse_error(std::string_view text) {
+  try {
+    (void)parse(text);
+  } catch (const ParseError& e) {
+    return e.diagnostic().message;
+  }
+  return "no error";
+}
+
+/// The full diagnostic `line:column: message` that parsing raises.
+inline std::string located_error(std::string_view text) {
+  try {
+    (void)parse(text);
+  } catch (const ParseError& e) {
+    const Diagnostic& d = e.diagnostic();
+    return std::to_string(d.line) + ":" + std::to_string(d.column) + ": " +
+           d.message;
+  }
+  return "no error";
+}
+
+}  // namespace lsys::testing

@@ -604,10 +604,7 @@ class Derivation::Impl {
 
   // ABOP p. 73: `%` removes itself and the rest of its branch.
   static void cut(ModuleString& s) {
-    if (std::find(s.symbols().begin(), s.symbols().end(), kCut) ==
-        s.symbols().end()) {
-      return;
-    }
+    if (!s.contains(kCut)) return;
     ModuleString kept;
     bool cutting = false;
     int depth = 0;

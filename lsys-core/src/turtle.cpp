@@ -10,12 +10,6 @@
 #include <numbers>
 
 namespace lsys {
-namespace {
-
-constexpr int kRotationsPerOrthonormalize = 64;
-
-}  // namespace
-
 SinCos sin_cos_deg(double angle_deg) noexcept {
   const double quarter = angle_deg / 90.0;
   if (quarter == std::floor(quarter) && std::fabs(quarter) < 1e15) {
@@ -34,25 +28,12 @@ SinCos sin_cos_deg(double angle_deg) noexcept {
   return {std::sin(radians), std::cos(radians)};
 }
 
-void Turtle::rotate(glm::dvec3& a, glm::dvec3& b, double angle_deg) noexcept {
-  const SinCos sc = sin_cos_deg(angle_deg);
-  const glm::dvec3 a2 = a * sc.cos + b * sc.sin;
-  b = b * sc.cos - a * sc.sin;
-  a = a2;
-  if (++rotations_since_orthonormalize_ >= kRotationsPerOrthonormalize) {
-    orthonormalize();
-  }
+void Turtle::cache_angle(double magnitude_deg) noexcept {
+  const SinCos sc = sin_cos_deg(magnitude_deg);
+  cached_angle_deg_ = magnitude_deg;
+  cached_sin_ = sc.sin;
+  cached_cos_ = sc.cos;
 }
-
-void Turtle::turn(double angle_deg) noexcept {
-  rotate(heading_, left_, angle_deg);
-}
-
-void Turtle::pitch(double angle_deg) noexcept {
-  rotate(heading_, up_, -angle_deg);
-}
-
-void Turtle::roll(double angle_deg) noexcept { rotate(left_, up_, angle_deg); }
 
 void Turtle::turn_around() noexcept {
   heading_ = -heading_;

@@ -111,7 +111,8 @@ void run_derive(const DeriveCommand& command) {
   long long max_depth = 0;
   while (derivation.next(chunk)) {
     length += chunk.size();
-    for (const lsys::SymbolId symbol : chunk.symbols()) {
+    for (std::size_t i = 0; i < chunk.size(); ++i) {
+      const lsys::SymbolId symbol = chunk.symbol(i);
       ++counts[symbol];
       if (symbol == lsys::kBranchOpen) max_depth = std::max(max_depth, ++depth);
       if (symbol == lsys::kBranchClose) --depth;

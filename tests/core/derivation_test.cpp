@@ -32,7 +32,8 @@ Counts count(const Grammar& g, DerivationOptions options = {}) {
   int depth = 0;
   while (d.next(chunk)) {
     c.length += chunk.size();
-    for (const SymbolId s : chunk.symbols()) {
+    for (std::size_t i = 0; i < chunk.size(); ++i) {
+      const SymbolId s = chunk.symbol(i);
       ++c.modules[g.alphabet.name(s)];
       if (s == kBranchOpen) c.max_depth = std::max(c.max_depth, ++depth);
       if (s == kBranchClose) --depth;
@@ -227,7 +228,8 @@ TEST(Derivation, StochasticChoicesFollowTheWeights) {
   double total = 0.0;
   for (std::uint64_t seed = 0; seed < 10000; ++seed) {
     const ModuleString s = derive(g, {.derivation_length = 2, .seed = seed});
-    for (const SymbolId sym : s.symbols()) {
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const SymbolId sym = s.symbol(i);
       ++seen[g.alphabet.name(sym)];
       ++total;
     }
@@ -247,7 +249,8 @@ TEST(Derivation, NormalisesWeightsOverApplicableProductions) {
   double c = 0.0;
   for (std::uint64_t seed = 0; seed < 2000; ++seed) {
     const ModuleString s = derive(g, {.derivation_length = 2, .seed = seed});
-    for (const SymbolId sym : s.symbols()) {
+    for (std::size_t i = 0; i < s.size(); ++i) {
+      const SymbolId sym = s.symbol(i);
       const std::string& name = g.alphabet.name(sym);
       ASSERT_NE(name, "a");
       b += name == "b" ? 1.0 : 0.0;

@@ -18,30 +18,38 @@ namespace lsys {
 class ModuleString {
  public:
   /// The number of modules.
-  [[nodiscard]] std::size_t size() const noexcept { return symbols_.size(); }
-  [[nodiscard]] bool empty() const noexcept { return symbols_.empty(); }
+  [[nodiscard]] std::size_t size() const noexcept { return entries_.size(); }
+  [[nodiscard]] bool empty() const noexcept { return entries_.empty(); }
   /// The name id of module i. @pre `i < size()`.
-  [[nodiscard]] SymbolId symbol(std::size_t i) const { return symbols_[i]; }
+  [[nodiscard]] SymbolId symbol(std::size_t i) const {
+    return entries_[i].symbol;
+  }
   /// The actual parameters of module i. @pre `i < size()`.
   [[nodiscard]] std::span<const double> parameters(std::size_t i) const {
-    return {params_.data() + begins_[i], begins_[i + 1] - begins_[i]};
+    return {params_.data() + entries_[i].first_parameter,
+            entries_[i].parameter_count};
   }
   /// The derivation step that created module i. @pre `i < size()`.
   [[nodiscard]] std::uint32_t generation(std::size_t i) const {
-    return generations_[i];
+    return entries_[i].generation;
   }
-  /// All name ids, in order.
-  [[nodiscard]] std::span<const SymbolId> symbols() const noexcept {
-    return symbols_;
+  /// True if some module has this name.
+  [[nodiscard]] bool contains(SymbolId symbol) const noexcept {
+    for (const Entry& e : entries_) {
+      if (e.symbol == symbol) return true;
+    }
+    return false;
   }
 
   /// Appends a module.
   void push_back(SymbolId symbol, std::span<const double> parameters,
                  std::uint32_t generation) {
-    symbols_.push_back(symbol);
-    generations_.push_back(generation);
-    params_.insert(params_.end(), parameters.begin(), parameters.end());
-    begins_.push_back(static_cast<std::uint32_t>(params_.size()));
+    entries_.push_back(Entry{symbol, generation,
+                             static_cast<std::uint32_t>(params_.size()),
+                             static_cast<std::uint32_t>(parameters.size())});
+    if (!parameters.empty()) {
+      params_.insert(params_.end(), parameters.begin(), parameters.end());
+    }
   }
   /// Appends module i of another string.
   void push_back(const ModuleString& other, std::size_t i) {
@@ -49,23 +57,25 @@ class ModuleString {
   }
   /// Removes every module, keeping the capacity.
   void clear() noexcept {
-    symbols_.clear();
-    generations_.clear();
+    entries_.clear();
     params_.clear();
-    begins_.resize(1);
   }
   /// Reserves room for `modules` modules and `parameters` values.
   void reserve(std::size_t modules, std::size_t parameters) {
-    symbols_.reserve(modules);
-    generations_.reserve(modules);
-    begins_.reserve(modules + 1);
+    entries_.reserve(modules);
     params_.reserve(parameters);
   }
 
  private:
-  std::vector<SymbolId> symbols_;
-  std::vector<std::uint32_t> generations_;
-  std::vector<std::uint32_t> begins_{0};
+  // One record per module keeps appending to a single array in the hot
+  // loop of the deriver.
+  struct Entry {
+    SymbolId symbol;
+    std::uint32_t generation;
+    std::uint32_t first_parameter;
+    std::uint32_t parameter_count;
+  };
+  std::vector<Entry> entries_;
   std::vector<double> params_;
 };
 

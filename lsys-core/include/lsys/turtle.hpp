@@ -6,6 +6,14 @@
 
 namespace lsys {
 
+/// The sine and cosine of an angle in degrees, exact for multiples of 90°
+/// so that lattice figures such as the Hilbert curve land on integers.
+struct SinCos {
+  double sin;
+  double cos;
+};
+[[nodiscard]] SinCos sin_cos_deg(double angle_deg) noexcept;
+
 /// The turtle's position and frame (ABOP §1.5): heading H, left L and up U,
 /// orthonormal and right-handed with H × L = U (seed 000). It starts at the
 /// origin with H = +Z, L = −X, U = −Y, so 2D figures lie in the XZ plane and
@@ -28,11 +36,11 @@ class Turtle {
   /// Moves along the heading (backwards for a negative distance).
   void move(double distance) noexcept { position_ += distance * heading_; }
   /// Rotates about U: positive turns H toward L (`+`).
-  void turn(double angle_deg) noexcept;
+  void turn(double angle_deg) noexcept { rotate(heading_, left_, angle_deg); }
   /// Rotates about L: positive turns H toward −U, pitching down (`&`).
-  void pitch(double angle_deg) noexcept;
+  void pitch(double angle_deg) noexcept { rotate(heading_, up_, -angle_deg); }
   /// Rotates about H: positive turns L toward U (`/` in lpfg and L-Py).
-  void roll(double angle_deg) noexcept;
+  void roll(double angle_deg) noexcept { rotate(left_, up_, angle_deg); }
   /// Turns 180° about U (`|`).
   void turn_around() noexcept;
   /// Rolls about H so that L is horizontal: L = V × H / |V × H| with V = +Z,
@@ -43,8 +51,28 @@ class Turtle {
   void bend(const glm::dvec3& tropism, double elasticity) noexcept;
 
  private:
-  void rotate(glm::dvec3& a, glm::dvec3& b, double angle_deg) noexcept;
+  // Turns a toward b in their plane; inline because turtles turn often.
+  void rotate(glm::dvec3& a, glm::dvec3& b, double angle_deg) noexcept {
+    const double magnitude = angle_deg < 0.0 ? -angle_deg : angle_deg;
+    if (magnitude != cached_angle_deg_) cache_angle(magnitude);
+    const double s = angle_deg < 0.0 ? -cached_sin_ : cached_sin_;
+    const double c = cached_cos_;
+    const glm::dvec3 a2 = a * c + b * s;
+    b = b * c - a * s;
+    a = a2;
+    if (++rotations_since_orthonormalize_ >= kRotationsPerOrthonormalize) {
+      orthonormalize();
+    }
+  }
+  void cache_angle(double magnitude_deg) noexcept;
   void orthonormalize() noexcept;
+
+  static constexpr int kRotationsPerOrthonormalize = 64;
+
+  // Most systems turn by one angle δ: keep its sine and cosine.
+  double cached_angle_deg_ = 0.0;
+  double cached_sin_ = 0.0;
+  double cached_cos_ = 1.0;
 
   glm::dvec3 position_{0.0, 0.0, 0.0};
   glm::dvec3 heading_{0.0, 0.0, 1.0};
@@ -53,12 +81,5 @@ class Turtle {
   int rotations_since_orthonormalize_ = 0;
 };
 
-/// The sine and cosine of an angle in degrees, exact for multiples of 90°
-/// so that lattice figures such as the Hilbert curve land on integers.
-struct SinCos {
-  double sin;
-  double cos;
-};
-[[nodiscard]] SinCos sin_cos_deg(double angle_deg) noexcept;
 
 }  // namespace lsys

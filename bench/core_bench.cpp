@@ -1,0 +1,83 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// Derivation and turtle throughput (docs/performance.md). Run:
+//   build/bench/core_bench --benchmark_repetitions=5
+//       --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+#include <sys/resource.h>
+
+#include <filesystem>
+#include <string>
+
+#include "lsys/derivation.hpp"
+#include "lsys/interpretation.hpp"
+#include "lsys/parser.hpp"
+#include "lsys/source.hpp"
+
+namespace {
+
+lsys::Grammar load(const std::string& name) {
+  return lsys::parse_grammar(lsys::load_source(
+      std::filesystem::path(LSOLID_SOURCE_DIR) / "printables" / name));
+}
+
+double peak_rss_mib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+// Modules per second of the derivation alone (what `lsolid derive --stats`
+// does).
+void derive_only(benchmark::State& state, const std::string& file, int n) {
+  const lsys::Grammar grammar = load(file);
+  std::size_t modules = 0;
+  for (auto _ : state) {
+    lsys::Derivation d(grammar, {.derivation_length = n,
+                                 .max_segments = 1'000'000'000});
+    lsys::ModuleString chunk;
+    modules = 0;
+    while (d.next(chunk)) modules += chunk.size();
+    benchmark::DoNotOptimize(modules);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * modules));
+  state.counters["modules"] = static_cast<double>(modules);
+  state.counters["peak_rss_MiB"] = peak_rss_mib();
+}
+
+// Modules per second of derivation plus turtle, building the skeleton.
+void derive_and_walk(benchmark::State& state, const std::string& file, int n) {
+  const lsys::Grammar grammar = load(file);
+  std::size_t modules = 0;
+  {
+    lsys::Derivation d(grammar, {.derivation_length = n});
+    lsys::ModuleString chunk;
+    while (d.next(chunk)) modules += chunk.size();
+  }
+  std::size_t segments = 0;
+  for (auto _ : state) {
+    const lsys::Skeleton s = lsys::interpret(grammar, {.derivation_length = n});
+    segments = s.segments.size();
+    benchmark::DoNotOptimize(segments);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * modules));
+  state.counters["modules"] = static_cast<double>(modules);
+  state.counters["segments"] = static_cast<double>(segments);
+  state.counters["peak_rss_MiB"] = peak_rss_mib();
+}
+
+BENCHMARK_CAPTURE(derive_and_walk, hilbert_n7, "hilbert-cube.ls", 7)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(derive_and_walk, bush_n7, "abop-1.25-bush.ls", 7)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(derive_only, hilbert_n7, "hilbert-cube.ls", 7)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(derive_only, hilbert_n8, "hilbert-cube.ls", 8)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(derive_and_walk, honda_n10, "honda-2.1a.ls", 10)
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -2,6 +2,7 @@
 // Source: seed 000 (Polish lecture on 3D L-systems, "Hilbert Space Filling
 // Curve"), ABOP fig. 1.19 (p. 20). Order n visits 8^n cells: 8^n - 1 unit
 // segments (63 at n = 2, 511 at n = 3).
+// expect: segments 63, polygons 0
 n=2, δ=90°
 width: 0.3
 A

@@ -519,11 +519,24 @@ class Parser {
         match_words(line.begin, line.end, "no warnings") == line.end) {
       return false;
     }
+    // A header alone starts a section; with content after its colon it
+    // applies to that line only (`aliases: f=F`, `Production rules : A=fA`).
+    Section section = section_;
     if (const auto header = match_header(line)) {
-      section_ = header->first;
-      if (header->second.empty()) return false;
+      if (header->second.empty()) {
+        section_ = header->first;
+        return false;
+      }
+      section = header->first;
       line = header->second;
     }
+    const Section previous = std::exchange(section_, section);
+    const bool result = sort_content(line, indented, after_production);
+    section_ = previous;
+    return result;
+  }
+
+  bool sort_content(Range line, bool indented, bool after_production) {
     if (section_ == Section::Aliases) {
       if (match_key(line)) {
         add_settings(line);

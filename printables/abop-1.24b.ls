@@ -1,0 +1,7 @@
+// Bracketed plant, ABOP fig. 1.24b (p. 25); seed 000 ("Modelowanie drzewa").
+// A planar figure: it lies in the XZ plane, as ABOP draws it seen from the front.
+// expect: segments 3125, polygons 0
+n=5, δ=20°
+width: 1
+F
+F → F[+F]F[-F][F]

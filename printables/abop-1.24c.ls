@@ -1,0 +1,7 @@
+// Bracketed plant, ABOP fig. 1.24c (p. 25); seed 000 ("Modelowanie drzewa").
+// A planar figure: it lies in the XZ plane, as ABOP draws it seen from the front.
+// expect: segments 4096, polygons 0
+n=4, δ=22.5°
+width: 1
+F
+F → FF-[-F+F+F]+[+F-F-F]

@@ -1,0 +1,9 @@
+// Bracketed plant, ABOP fig. 1.24d (p. 25); seed 000 ("Modelowanie drzewa")
+// and seed 003, which draws its first steps by hand.
+// A planar figure: it lies in the XZ plane, as ABOP draws it seen from the front.
+// expect: segments 4118, polygons 0
+n=7, δ=20°
+width: 1
+X
+X → F[+X]F[-X]+X
+F → FF

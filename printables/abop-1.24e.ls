@@ -1,0 +1,8 @@
+// Bracketed plant, ABOP fig. 1.24e (p. 25); seed 000 ("Modelowanie drzewa").
+// A planar figure: it lies in the XZ plane, as ABOP draws it seen from the front.
+// expect: segments 4118, polygons 0
+n=7, δ=25.7°
+width: 1
+X
+X → F[+X][-X]FX
+F → FF

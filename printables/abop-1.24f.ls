@@ -1,0 +1,8 @@
+// Bracketed plant, ABOP fig. 1.24f (p. 25); seed 000 ("Modelowanie drzewa").
+// A planar figure: it lies in the XZ plane, as ABOP draws it seen from the front.
+// expect: segments 1488, polygons 0
+n=5, δ=22.5°
+width: 1
+X
+X → F-[[X]+X]+F[+FX]-X
+F → FF

@@ -1,0 +1,15 @@
+// Sympodial tree (Aono and Kunii), ABOP fig. 2.7b, Table 2.2 case b (p. 59).
+// Each step ends the axis and continues it by two lateral branches.
+// 2^10 - 1 = 1023 segments at n = 10.
+// expect: segments 1023, polygons 0
+#define r1 0.9  /* contraction ratio 1 */
+#define r2 0.7  /* contraction ratio 2 */
+#define a1 10  /* branching angle 1 */
+#define a2 60  /* branching angle 2 */
+#define wr 0.707 /* width decrease rate */
+n = 10
+// cpfg widths are pixels; this maps width 10 to a trunk 0.25 units thick.
+width scale: 0.025
+ω : A(1, 10)
+p1 : A(l, w) : * → !(w)F(l)[&(a1)B(l*r1, w*wr)]/(180)[&(a2)B(l*r2, w*wr)]
+p2 : B(l, w) : * → !(w)F(l)[+(a1)$B(l*r1, w*wr)][-(a2)$B(l*r2, w*wr)]

@@ -1,0 +1,15 @@
+// Tree C of seed 001 ("Modeling a Tree using L-System", 2008), with the
+// blog's own symbols and setting names, plus an alias block.
+// expect: segments 2186, polygons 0
+aliases:
+  f = F   /* create branch */
+  v = &   /* pitch down */
+  < = \   /* twist left */
+  > = /   /* twist right */
+Angle : 15
+Iterations: 13
+Branch radius: 0.02
+Branch radius reduction: 0.0015
+Branch length (height): 0.15
+Initial value : fA
+Production rules : A = ^fB>>>B>>>>>B, B = [^^f>>>>>>A]

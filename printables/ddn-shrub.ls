@@ -1,0 +1,13 @@
+// The small shrub of seed 002 ("Digital Design of Nature", §5.4, fig. 5.5,
+// courtesy of P. Prusinkiewicz), written with its ::= arrows. The scanned
+// text garbles the leaf rule; this is ABOP fig. 1.25's, which it copies.
+// As printed, only the first branch of A thins with `!`.
+// expect: segments 3891, polygons 1284
+n=7, δ=22.5°
+width: 0.3
+width factor: 0.75
+ω: A
+A ::= [&FL!A]/////'[&FLA]///////'[&FLA]
+F ::= S/////F
+S ::= FL
+L ::= ['''∧∧{-f+f+f-|-f+f+f}]

@@ -1,0 +1,8 @@
+// The tree of seed 003 ("[Houdini] L-System 初步了解"): ABOP fig. 1.24d in
+// Houdini's notation, premise and -> arrows.
+// expect: segments 4118, polygons 0
+n=7, δ=20°
+width: 1
+premise: X
+X->F[+X]F[-X]+X
+F->FF

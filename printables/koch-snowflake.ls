@@ -1,0 +1,8 @@
+// The Koch snowflake of seed 004 ("Lindenmayer Systems: an efficient
+// implementation"): axiom F--F--F, F → F+F--F+F, σ = 60°. The talk draws
+// iterations 0 to 3; this is 4. A planar figure in the XZ plane.
+// expect: segments 768, polygons 0
+n=4, σ=60°
+width: 1
+ω: F--F--F
+F → F+F--F+F

@@ -1,0 +1,6 @@
+// The polygon example of seed 004: F{-f+f+f-|-f+f+f} with σ = 30°, a stem
+// and a filled leaf.
+// expect: segments 1, polygons 1
+n=0, σ=30°
+width: 0.2
+ω: F{-f+f+f-|-f+f+f}

@@ -1,0 +1,11 @@
+// The Sierpinski triangle of seed 004 ("Lindenmayer Systems: an efficient
+// implementation"): A → B-A-B, B → A+B+A, where A and B both draw. The talk
+// prints σ = 90°, which does not close the triangle; the arrowhead curve
+// needs 60° (ABOP fig. 1.10b), which is used here.
+// expect: segments 729, polygons 0
+n=6, σ=60°
+width: 1
+aliases: A=F B=F
+ω: A
+A → B-A-B
+B → A+B+A

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "lsolid/print_settings.hpp"
 #include "lsys/derivation.hpp"
 #include "lsys/grammar.hpp"
 #include "lsys/interpretation.hpp"
@@ -46,12 +47,50 @@ struct DeriveCommand {
 /// @throws lsys::ParseError, lsolid::IoError.
 void run_derive(const DeriveCommand& command);
 
+/// Print options given on the command line, as text until parsed.
+struct PrintInput {
+  std::optional<std::string> wall;
+  std::optional<std::string> height;
+  std::optional<std::string> size;
+  std::optional<std::string> scale;
+  std::optional<std::string> tolerance;
+};
+
+/// Registers --wall, --height, --size, --scale and --tolerance.
+void add_print_options(CLI::App& command, PrintInput& input);
+
+/// The file's print settings overridden by the command line's.
+/// @throws lsys::ParseError for a bad length.
+[[nodiscard]] PrintSettings print_settings(const lsys::Grammar& grammar,
+                                           const PrintInput& input);
+
 /// `lsolid skeleton`: prints the turtle's segments and polygons.
 struct SkeletonCommand {
   GrammarInput input;
+  PrintInput print;
   bool json = false;
 };
 /// @throws lsys::ParseError, lsolid::IoError.
 void run_skeleton(const SkeletonCommand& command);
+
+/// `lsolid FILE.ls`: builds the printable mesh and writes it.
+struct BuildCommand {
+  GrammarInput input;
+  PrintInput print;
+  std::string output;  ///< empty: FILE with .stl beside the input
+  bool ascii = false;
+  bool no_union = false;
+};
+/// Returns the exit code (3 when the mesh is not printable).
+/// @throws lsys::ParseError, GeometryError, IoError.
+int run_build(const BuildCommand& command);
+
+/// `lsolid check MESH`: validates an STL or OFF file.
+struct CheckCommand {
+  std::string file;
+  bool json = false;
+};
+/// Returns 0 when printable, 1 when not, 2 when unreadable.
+int run_check(const CheckCommand& command);
 
 }  // namespace lsolid::cli

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "lsolid/units.hpp"
 #include "lsys/module_string.hpp"
 #include "lsys/parser.hpp"
 #include "lsys/source.hpp"
@@ -64,8 +65,44 @@ void add_grammar_options(CLI::App& command, GrammarInput& input,
 }
 
 lsys::Grammar load_grammar(const GrammarInput& input) {
-  return lsys::parse_grammar(lsys::load_source(input.file),
-                             lsys::ParseOptions{.defines = input.defines});
+  return lsys::parse_grammar(
+      lsys::load_source(input.file),
+      lsys::ParseOptions{.defines = input.defines,
+                         .extra_settings = print_setting_names()});
+}
+
+void add_print_options(CLI::App& command, PrintInput& input) {
+  command.add_option("--wall", input.wall,
+                     "minimum wall: thinnest branch and leaf thickness "
+                     "(default 0.8mm)");
+  auto* height = command.add_option("--height", input.height,
+                                    "scale the model to this height");
+  auto* size = command.add_option(
+      "--size", input.size, "scale the longest side to this (default 100mm)");
+  auto* scale =
+      command.add_option("--scale", input.scale, "millimetres per model unit");
+  height->excludes(size)->excludes(scale);
+  size->excludes(scale);
+  command.add_option("--tolerance", input.tolerance,
+                     "chord error of tube cross-sections (default 0.05mm)");
+}
+
+PrintSettings print_settings(const lsys::Grammar& grammar,
+                             const PrintInput& input) {
+  PrintSettings given;
+  if (input.wall) given.wall_mm = parse_length_mm(*input.wall, "--wall");
+  if (input.height)
+    given.height_mm = parse_length_mm(*input.height, "--height");
+  if (input.size) given.size_mm = parse_length_mm(*input.size, "--size");
+  if (input.scale) {
+    given.scale_mm_per_unit = parse_length_mm(*input.scale, "--scale");
+  }
+  if (input.tolerance) {
+    given.tolerance_mm = parse_length_mm(*input.tolerance, "--tolerance");
+  }
+  return resolve_print_settings(
+      grammar, given, input.height || input.size || input.scale,
+      input.wall.has_value(), input.tolerance.has_value());
 }
 
 lsys::DerivationOptions derivation_options(const GrammarInput& input) {

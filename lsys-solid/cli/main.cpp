@@ -19,6 +19,9 @@ constexpr int kExitIo = 4;
 
 constexpr const char* kExamples = R"(
 Examples:
+  lsolid printables/abop-1.25-bush.ls --wall 0.8mm -o bush.stl
+  lsolid printables/hilbert-cube.ls --size 60mm
+  lsolid check bush.stl
   lsolid derive printables/hilbert-cube.ls -n 2
   lsolid derive printables/abop-1.25-bush.ls --stats
   lsolid skeleton printables/honda-2.1a.ls --json
@@ -33,7 +36,31 @@ int main(int argc, char** argv) {
   CLI::App app{"lsolid turns Lindenmayer systems into 3D-printable solids."};
   app.footer(kExamples);
   app.set_version_flag("--version", "lsolid " LSOLID_VERSION);
-  app.require_subcommand(1);
+  app.require_subcommand(0, 1);
+
+  lsolid::cli::BuildCommand build;
+  app.add_option("FILE", build.input.file,
+                 "the .ls file to build into a printable mesh")
+      ->check(CLI::ExistingFile);
+  app.add_option("-o,--output", build.output,
+                 "output file: .stl (binary) or .off; default FILE.stl");
+  app.add_flag("--ascii", build.ascii, "write ASCII STL");
+  app.add_flag("--no-union", build.no_union,
+               "write the overlapping parts without uniting them (debugging)");
+  app.add_option("-n,--derivation-length", build.input.derivation_length,
+                 "derivation steps, overriding the file's n")
+      ->check(CLI::Range(0, 10000));
+  app.add_option("--seed", build.input.seed, "seed of stochastic productions");
+  app.add_option("--define", build.input.defines,
+                 "NAME=VALUE: set a constant, overriding #define")
+      ->allow_extra_args(false);
+  app.add_option("--max-segments", build.input.max_segments,
+                 "refuse to draw more segments than this")
+      ->capture_default_str();
+  app.add_option("--roll", build.input.roll,
+                 "which way / and \\ roll: lpfg (default) or cpfg")
+      ->check(CLI::IsMember({"lpfg", "cpfg"}));
+  lsolid::cli::add_print_options(app, build.print);
 
   lsolid::cli::DeriveCommand derive;
   CLI::App* derive_app =
@@ -47,8 +74,17 @@ int main(int argc, char** argv) {
   CLI::App* skeleton_app = app.add_subcommand(
       "skeleton", "print the turtle's segments and polygons (model units)");
   lsolid::cli::add_grammar_options(*skeleton_app, skeleton.input, true);
+  lsolid::cli::add_print_options(*skeleton_app, skeleton.print);
   skeleton_app->add_flag("--json", skeleton.json,
                          "print every segment and polygon as JSON");
+
+  lsolid::cli::CheckCommand check;
+  CLI::App* check_app = app.add_subcommand(
+      "check",
+      "check that an STL or OFF mesh is printable (exit 0 yes, 1 no, "
+      "2 unreadable)");
+  check_app->add_option("MESH", check.file, "the mesh to check")->required();
+  check_app->add_flag("--json", check.json, "print the report as JSON");
 
   try {
     app.parse(argc, argv);
@@ -57,9 +93,16 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : kExitInput;
   }
 
+  if (check_app->parsed()) return lsolid::cli::run_check(check);
+  const bool is_build = !derive_app->parsed() && !skeleton_app->parsed();
+  if (is_build && build.input.file.empty()) {
+    std::fputs(app.help().c_str(), stderr);
+    return kExitInput;
+  }
   try {
     if (derive_app->parsed()) lsolid::cli::run_derive(derive);
     if (skeleton_app->parsed()) lsolid::cli::run_skeleton(skeleton);
+    if (is_build) return lsolid::cli::run_build(build);
   } catch (const lsys::ParseError& e) {
     std::fputs(lsys::format_diagnostic(e.diagnostic()).c_str(), stderr);
     return kExitInput;

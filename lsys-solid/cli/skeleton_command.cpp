@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "commands.hpp"
+#include "lsolid/scale.hpp"
 #include "lsys/module_string.hpp"
 #include "output.hpp"
 
@@ -23,9 +24,12 @@ void append_point(std::string& out, const glm::dvec3& p) {
   out += ']';
 }
 
-void write_json(const lsys::Skeleton& skeleton, Output& out) {
+void write_json(const lsys::Skeleton& skeleton, const char* units,
+                Output& out) {
   std::string& text = out.text();
-  text += "{\"units\": \"model\", \"segments\": [";
+  text += "{\"units\": \"";
+  text += units;
+  text += "\", \"segments\": [";
   for (std::size_t i = 0; i < skeleton.segments.size(); ++i) {
     const lsys::Segment& s = skeleton.segments[i];
     text += i == 0 ? "\n" : ",\n";
@@ -55,7 +59,8 @@ void write_json(const lsys::Skeleton& skeleton, Output& out) {
   text += "]}\n";
 }
 
-void write_summary(const lsys::Skeleton& skeleton, Output& out) {
+void write_summary(const lsys::Skeleton& skeleton, const char* units,
+                   Output& out) {
   glm::dvec3 low(std::numeric_limits<double>::infinity());
   glm::dvec3 high(-std::numeric_limits<double>::infinity());
   const auto grow = [&](const glm::dvec3& p) {
@@ -78,9 +83,9 @@ void write_summary(const lsys::Skeleton& skeleton, Output& out) {
   }
   if (low.x <= high.x) {
     text += fmt::format(
-        "bounds: [{:.6g}, {:.6g}, {:.6g}] to [{:.6g}, {:.6g}, {:.6g}] model "
-        "units\n",
-        low.x, low.y, low.z, high.x, high.y, high.z);
+        "bounds: [{:.6g}, {:.6g}, {:.6g}] to [{:.6g}, {:.6g}, {:.6g}] {}\n",
+        low.x, low.y, low.z, high.x, high.y, high.z,
+        std::string_view(units) == "mm" ? "mm" : "model units");
   }
 }
 
@@ -88,14 +93,20 @@ void write_summary(const lsys::Skeleton& skeleton, Output& out) {
 
 void run_skeleton(const SkeletonCommand& command) {
   const lsys::Grammar grammar = load_grammar(command.input);
-  const lsys::Skeleton skeleton =
+  lsys::Skeleton skeleton =
       lsys::interpret(grammar, derivation_options(command.input),
                       interpret_options(command.input));
+  const PrintInput& p = command.print;
+  const bool in_mm = p.wall || p.height || p.size || p.scale;
+  if (in_mm) {
+    skeleton = scale_to_print(skeleton, print_settings(grammar, p)).skeleton;
+  }
+  const char* units = in_mm ? "mm" : "model";
   Output out(stdout);
   if (command.json) {
-    write_json(skeleton, out);
+    write_json(skeleton, units, out);
   } else {
-    write_summary(skeleton, out);
+    write_summary(skeleton, units, out);
   }
   out.flush();
 }

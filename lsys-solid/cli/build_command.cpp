@@ -1,0 +1,93 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "commands.hpp"
+#include "lsolid/errors.hpp"
+#include "lsolid/mesh_io.hpp"
+#include "lsolid/solid.hpp"
+
+namespace lsolid::cli {
+namespace {
+
+void print_report(const SolidReport& r, bool united) {
+  const ValidationReport& v = r.validation;
+  fmt::print("segments: {}, leaves: {}\n", r.segments, r.polygons);
+  fmt::print(
+      "parts: {} tubes, {} joints, {} leaf plates; scale {:.4g} mm per unit\n",
+      r.tubes, r.joints, r.plates, r.mm_per_unit);
+  if (r.skipped_polygons > 0) {
+    fmt::print("skipped: {} polygons without area\n", r.skipped_polygons);
+  }
+  if (united) {
+    fmt::print("union: {} booleans, {} joined without a boolean, {} retried\n",
+               r.union_stats.booleans, r.union_stats.concatenations,
+               r.union_stats.retries);
+  }
+  fmt::print("triangles: {}\n", v.triangles);
+  fmt::print("volume: {:.1f} mm³\n", v.volume_mm3);
+  const glm::dvec3 size = v.bounds.size();
+  fmt::print(
+      "size: {:.2f} x {:.2f} x {:.2f} mm, from ({:.2f}, {:.2f}, {:.2f})\n",
+      size.x, size.y, size.z, v.bounds.min.x, v.bounds.min.y, v.bounds.min.z);
+  if (united) {
+    fmt::print(
+        "rounding: {} pass{}, {} slivers removed, {} intersecting faces "
+        "rebuilt\n",
+        r.rounding.passes, r.rounding.passes == 1 ? "" : "es",
+        r.rounding.slivers_removed, r.rounding.faces_rebuilt);
+  }
+  fmt::print(
+      "time: skeleton {:.2f} s, parts {:.2f} s, union {:.2f} s, rounding "
+      "{:.2f} s, "
+      "check {:.2f} s\n",
+      r.seconds.skeleton, r.seconds.parts, r.seconds.unite, r.seconds.round,
+      r.seconds.check);
+  if (v.is_printable()) {
+    fmt::print(
+        "check: printable: closed, manifold, outward, no self-intersections; "
+        "{} shell{}, genus {}\n",
+        v.shells, v.shells == 1 ? "" : "s", v.genus);
+  } else {
+    fmt::print("check: NOT printable\n");
+    for (const std::string& problem : v.problems())
+      fmt::print("  {}\n", problem);
+  }
+}
+
+}  // namespace
+
+int run_build(const BuildCommand& command) {
+  std::filesystem::path output = command.output;
+  if (output.empty()) {
+    output =
+        std::filesystem::path(command.input.file).replace_extension(".stl");
+  }
+  const MeshFormat format = format_for(output, command.ascii);
+  const lsys::Grammar grammar = load_grammar(command.input);
+  SolidOptions options;
+  options.derivation = derivation_options(command.input);
+  options.interpretation = interpret_options(command.input);
+  options.print = print_settings(grammar, command.print);
+  options.unite = !command.no_union;
+  options.float_coordinates = format != MeshFormat::Off;
+  const Solid solid = build_solid(grammar, options);
+  print_report(solid.report, options.unite);
+  if (!solid.report.validation.is_printable() && options.unite) {
+    std::fprintf(stderr,
+                 "error: the mesh is not printable; %s was not written\n",
+                 output.string().c_str());
+    return 3;
+  }
+  write_mesh(solid.mesh, output, format);
+  fmt::print(
+      "wrote {}{}\n", output.string(),
+      options.unite ? "" : " (overlapping parts, not united: --no-union)");
+  std::fflush(stdout);
+  return 0;
+}
+
+}  // namespace lsolid::cli

@@ -1,0 +1,42 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <vector>
+
+namespace lsolid {
+
+/// An indexed triangle mesh in millimetres. Triangles list vertex indices
+/// counter-clockwise seen from outside (outward normals by the right-hand
+/// rule).
+struct TriangleMesh {
+  std::vector<glm::dvec3> vertices;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+
+/// An axis-aligned box; `min > max` when empty.
+struct Box {
+  glm::dvec3 min{1e300, 1e300, 1e300};
+  glm::dvec3 max{-1e300, -1e300, -1e300};
+  [[nodiscard]] bool empty() const noexcept { return min.x > max.x; }
+  [[nodiscard]] glm::dvec3 size() const noexcept { return max - min; }
+};
+
+/// The bounding box of the vertices that triangles use.
+[[nodiscard]] Box bounds(const TriangleMesh& mesh);
+
+/// The enclosed volume by the divergence theorem: positive for a closed mesh
+/// with outward normals.
+[[nodiscard]] double signed_volume(const TriangleMesh& mesh);
+
+/// Appends `part` to `mesh` (a disjoint union of surfaces, no boolean).
+void append(TriangleMesh& mesh, const TriangleMesh& part);
+
+/// The mesh with every coordinate rounded to the nearest float, as STL
+/// stores it, and vertices that become equal merged.
+[[nodiscard]] TriangleMesh round_to_float(const TriangleMesh& mesh);
+
+}  // namespace lsolid

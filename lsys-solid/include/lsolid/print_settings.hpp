@@ -1,0 +1,35 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lsys/grammar.hpp"
+
+namespace lsolid {
+
+/// How to print: sizes in millimetres. At most one of height, size and
+/// scale is set; with none, the longest side becomes 100 mm.
+struct PrintSettings {
+  double wall_mm = 0.8;  ///< minimum wall: thinnest branch, leaf thickness
+  std::optional<double> height_mm;          ///< model height along Z
+  std::optional<double> size_mm;            ///< longest side
+  std::optional<double> scale_mm_per_unit;  ///< millimetres per model unit
+  double tolerance_mm = 0.05;  ///< chord error of tube cross-sections
+};
+
+/// The setting names a `.ls` file may use for print settings (`wall: 0.8mm`),
+/// to pass as lsys::ParseOptions::extra_settings.
+[[nodiscard]] std::vector<std::string> print_setting_names();
+
+/// The print settings a file states, then those of the command line, which
+/// win: a size given on the command line replaces every size of the file.
+/// @throws lsys::ParseError at the file's value for a bad length.
+[[nodiscard]] PrintSettings resolve_print_settings(
+    const lsys::Grammar& grammar, const PrintSettings& command_line,
+    bool command_line_sets_size, bool command_line_sets_wall,
+    bool command_line_sets_tolerance);
+
+}  // namespace lsolid

@@ -1,0 +1,33 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstddef>
+
+#include "lsolid/mesh.hpp"
+
+namespace lsolid {
+
+/// What rounding had to mend.
+struct RoundingStats {
+  int passes = 0;  ///< rounds of repair needed
+  std::size_t slivers_removed =
+      0;  ///< almost degenerate faces collapsed or flipped
+  std::size_t faces_rebuilt = 0;  ///< self-intersecting faces replaced
+};
+
+/// Rounds a union's coordinates to what the file will store (floats for STL)
+/// and mends what rounding breaks. An exact union has slivers, edges of
+/// 10⁻⁸ mm and near-tangent sheets (geometry-and-printing.md §0); rounding
+/// them makes degenerate and self-intersecting faces. Each pass rounds,
+/// collapses edges shorter than 10⁻⁴ mm, flips caps lower than that, and
+/// rebuilds the faces that still intersect (CGAL's
+/// experimental::remove_self_intersections), until none is left. Every
+/// coordinate of the result is representable in the output format, so
+/// validating the result validates the file.
+/// @pre the mesh is closed and 2-manifold.
+[[nodiscard]] TriangleMesh round_and_repair(const TriangleMesh& mesh,
+                                            bool float_coordinates,
+                                            RoundingStats& stats);
+
+}  // namespace lsolid

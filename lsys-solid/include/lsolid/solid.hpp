@@ -1,0 +1,66 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstddef>
+
+#include "lsolid/boolean.hpp"
+#include "lsolid/mesh.hpp"
+#include "lsolid/print_settings.hpp"
+#include "lsolid/rounding.hpp"
+#include "lsolid/validate.hpp"
+#include "lsys/derivation.hpp"
+#include "lsys/grammar.hpp"
+#include "lsys/interpretation.hpp"
+
+namespace lsolid {
+
+/// How to turn a grammar into a printable mesh.
+struct SolidOptions {
+  lsys::DerivationOptions derivation;
+  lsys::InterpretOptions interpretation;
+  PrintSettings print;
+  /// False writes the overlapping parts without a union (`--no-union`).
+  bool unite = true;
+  /// Round coordinates to floats before checking, as STL stores them.
+  bool float_coordinates = true;
+};
+
+/// Seconds spent in each stage.
+struct StageSeconds {
+  double skeleton = 0.0;  ///< parse is before; derivation and turtle
+  double parts = 0.0;     ///< scaling and meshing the parts
+  double unite = 0.0;     ///< the boolean union
+  double round = 0.0;     ///< rounding to the file's precision, with repair
+  double check = 0.0;     ///< validation of the mesh as it will be written
+};
+
+/// What was built.
+struct SolidReport {
+  std::size_t segments = 0;
+  std::size_t polygons = 0;
+  std::size_t tubes = 0;
+  std::size_t joints = 0;
+  std::size_t plates = 0;
+  std::size_t skipped_polygons = 0;
+  double mm_per_unit = 1.0;
+  UnionStats union_stats;
+  RoundingStats rounding;
+  ValidationReport validation;  ///< of `Solid::mesh`, exactly as returned
+  StageSeconds seconds;
+};
+
+/// A mesh ready to write and its report.
+struct Solid {
+  TriangleMesh mesh;
+  SolidReport report;
+};
+
+/// Derives, interprets, scales, meshes, unites and validates. The mesh is
+/// returned even when the validation fails; callers decide not to write it.
+/// @throws lsys::ParseError for bad input or size limits, GeometryError when
+///   the model is empty or the union fails.
+[[nodiscard]] Solid build_solid(const lsys::Grammar& grammar,
+                                const SolidOptions& options = {});
+
+}  // namespace lsolid

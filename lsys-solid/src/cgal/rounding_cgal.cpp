@@ -1,0 +1,116 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// Repairs what rounding an exact union does to it, with CGAL 5.5's repair
+// functions (PMP::remove_degenerate_faces, the experimental
+// remove_almost_degenerate_faces and remove_self_intersections). Predicates
+// are exact (EPICK) on the rounded coordinates themselves.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
+#include <CGAL/Polygon_mesh_processing/repair_self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <cmath>
+#include <set>
+#include <unordered_map>
+#include <vector>
+
+#include "lsolid/rounding.hpp"
+
+namespace lsolid {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+using Face = Mesh::Face_index;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+constexpr int kMaxPasses = 6;
+constexpr double kShortEdgeMm = 1e-4;
+constexpr double kCapCosine = -0.985;  // angles above ~170° are caps
+
+Mesh to_mesh(const TriangleMesh& m) {
+  Mesh out;
+  std::vector<Mesh::Vertex_index> v;
+  v.reserve(m.vertices.size());
+  for (const glm::dvec3& p : m.vertices)
+    v.push_back(out.add_vertex(Point(p.x, p.y, p.z)));
+  for (const auto& t : m.triangles) out.add_face(v[t[0]], v[t[1]], v[t[2]]);
+  return out;
+}
+
+TriangleMesh from_mesh(const Mesh& mesh) {
+  TriangleMesh out;
+  std::unordered_map<std::uint32_t, std::uint32_t> index;
+  for (const auto v : mesh.vertices()) {
+    index.emplace(static_cast<std::uint32_t>(v),
+                  static_cast<std::uint32_t>(out.vertices.size()));
+    const Point& p = mesh.point(v);
+    out.vertices.emplace_back(p.x(), p.y(), p.z());
+  }
+  for (const auto f : mesh.faces()) {
+    std::array<std::uint32_t, 3> t{};
+    std::size_t k = 0;
+    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+      if (k < 3) t[k] = index.at(static_cast<std::uint32_t>(v));
+      ++k;
+    }
+    if (k == 3) out.triangles.push_back(t);
+  }
+  return out;
+}
+
+void snap_to_float(Mesh& mesh) {
+  for (const auto v : mesh.vertices()) {
+    const Point& p = mesh.point(v);
+    mesh.point(v) = Point(static_cast<float>(p.x()), static_cast<float>(p.y()),
+                          static_cast<float>(p.z()));
+  }
+}
+
+std::size_t count_faces(const Mesh& mesh) { return mesh.number_of_faces(); }
+
+}  // namespace
+
+TriangleMesh round_and_repair(const TriangleMesh& input, bool float_coordinates,
+                              RoundingStats& stats) {
+  Mesh mesh = to_mesh(input);
+  for (int pass = 0; pass < kMaxPasses; ++pass) {
+    stats.passes = pass + 1;
+    if (float_coordinates) snap_to_float(mesh);
+    const std::size_t before = count_faces(mesh);
+    PMP::remove_degenerate_faces(mesh);
+    PMP::experimental::remove_almost_degenerate_faces(
+        faces(mesh), mesh, kCapCosine, 1.0, kShortEdgeMm,
+        CGAL::parameters::flip_triangle_height_threshold(kShortEdgeMm));
+    mesh.collect_garbage();
+    stats.slivers_removed += before - std::min(before, count_faces(mesh));
+
+    std::vector<std::pair<Face, Face>> pairs;
+    PMP::self_intersections(mesh, std::back_inserter(pairs));
+    bool has_degenerate = false;
+    for (const auto f : mesh.faces()) {
+      if (PMP::is_degenerate_triangle_face(f, mesh)) {
+        has_degenerate = true;
+        break;
+      }
+    }
+    if (pairs.empty() && !has_degenerate) break;
+    std::set<Face> bad;
+    for (const auto& [a, b] : pairs) {
+      bad.insert(a);
+      bad.insert(b);
+    }
+    stats.faces_rebuilt += bad.size();
+    if (!bad.empty()) {
+      PMP::experimental::remove_self_intersections(
+          bad, mesh, CGAL::parameters::preserve_genus(false));
+      mesh.collect_garbage();
+    }
+  }
+  return from_mesh(mesh);
+}
+
+}  // namespace lsolid

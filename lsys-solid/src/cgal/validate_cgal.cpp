@@ -1,0 +1,80 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// Exact geometric checks with CGAL 5.5 and its filtered exact predicates
+// (EPICK): coordinates are doubles, and every predicate is decided exactly.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <iterator>
+#include <vector>
+
+#include "exact_checks.hpp"
+
+namespace lsolid {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+// Counts the pairs without keeping them.
+struct CountingIterator {
+  using iterator_category = std::output_iterator_tag;
+  using value_type = void;
+  using difference_type = std::ptrdiff_t;
+  using pointer = void;
+  using reference = void;
+  std::size_t* count;
+  CountingIterator& operator*() { return *this; }
+  CountingIterator& operator++() { return *this; }
+  CountingIterator operator++(int) { return *this; }
+  template <typename T>
+  CountingIterator& operator=(const T&) {
+    ++*count;
+    return *this;
+  }
+};
+
+}  // namespace
+
+ExactChecks exact_checks(const TriangleMesh& mesh, bool is_edge_manifold,
+                         bool is_closed_manifold) {
+  ExactChecks r;
+  std::vector<Point> points;
+  points.reserve(mesh.vertices.size());
+  for (const glm::dvec3& p : mesh.vertices) points.emplace_back(p.x, p.y, p.z);
+  std::vector<std::vector<std::size_t>> polygons;
+  polygons.reserve(mesh.triangles.size());
+  for (const auto& t : mesh.triangles) {
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] ||
+        CGAL::collinear(points[t[0]], points[t[1]], points[t[2]])) {
+      ++r.degenerate_faces;
+      continue;  // CGAL's mesh checks require non-degenerate faces
+    }
+    polygons.push_back({t[0], t[1], t[2]});
+  }
+  if (!is_edge_manifold || polygons.empty()) return r;
+  // Pinched vertices are split so that a halfedge mesh can hold the faces;
+  // faces that met only there then count as intersecting, as they touch.
+  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
+    PMP::orient_polygon_soup(points, polygons);
+  }
+  Mesh sm;
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, sm);
+  PMP::self_intersections(sm, CountingIterator{&r.self_intersecting_pairs});
+  r.self_intersections_checked = true;
+  if (is_closed_manifold && r.degenerate_faces == 0 &&
+      r.self_intersecting_pairs == 0) {
+    r.orientation_checked = true;
+    r.is_outward = PMP::does_bound_a_volume(sm);
+  }
+  return r;
+}
+
+}  // namespace lsolid

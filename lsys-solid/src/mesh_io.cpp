@@ -1,0 +1,286 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// STL (binary and ASCII) and OFF, written through a temporary file that is
+// renamed into place, so an output is complete or absent.
+#include "lsolid/mesh_io.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <glm/geometric.hpp>
+#include <limits>
+#include <sstream>
+#include <unordered_map>
+
+#include "lsolid/errors.hpp"
+#include "vertex_key.hpp"
+
+namespace lsolid {
+namespace {
+
+[[noreturn]] void fail(const std::filesystem::path& path,
+                       const std::string& what) {
+  throw IoError(path.string() + ": " + what);
+}
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+class SoupBuilder {
+ public:
+  void add(const std::array<glm::dvec3, 3>& corners) {
+    std::array<std::uint32_t, 3> t{};
+    for (int i = 0; i < 3; ++i) {
+      const FloatKey key = float_key(corners[i]);
+      const auto [it, inserted] = index_.emplace(
+          key, static_cast<std::uint32_t>(mesh_.vertices.size()));
+      if (inserted) mesh_.vertices.push_back(key_point(key));
+      t[i] = it->second;
+    }
+    mesh_.triangles.push_back(t);
+  }
+  TriangleMesh take() { return std::move(mesh_); }
+
+ private:
+  TriangleMesh mesh_;
+  std::unordered_map<FloatKey, std::uint32_t, FloatKeyHash> index_;
+};
+
+TriangleMesh read_binary_stl(const std::string& data,
+                             const std::filesystem::path& path) {
+  std::uint32_t count = 0;
+  std::memcpy(&count, data.data() + 80, 4);
+  if (data.size() != 84 + 50ULL * count) fail(path, "truncated binary STL");
+  SoupBuilder soup;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const char* record = data.data() + 84 + 50ULL * i;
+    std::array<float, 9> xyz{};
+    std::memcpy(xyz.data(), record + 12, sizeof(xyz));
+    std::array<glm::dvec3, 3> corners;
+    for (int k = 0; k < 3; ++k) {
+      corners[k] = {xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]};
+      if (!std::isfinite(corners[k].x) || !std::isfinite(corners[k].y) ||
+          !std::isfinite(corners[k].z)) {
+        fail(path,
+             "triangle " + std::to_string(i) + " has a non-finite vertex");
+      }
+    }
+    soup.add(corners);
+  }
+  return soup.take();
+}
+
+TriangleMesh read_ascii_stl(const std::string& data,
+                            const std::filesystem::path& path) {
+  std::istringstream in(data);
+  std::string word;
+  SoupBuilder soup;
+  std::array<glm::dvec3, 3> corners;
+  int corner = 0;
+  while (in >> word) {
+    if (word != "vertex") continue;
+    glm::dvec3 p;
+    if (!(in >> p.x >> p.y >> p.z)) fail(path, "bad vertex in ASCII STL");
+    corners[static_cast<std::size_t>(corner++)] = p;
+    if (corner == 3) {
+      soup.add(corners);
+      corner = 0;
+    }
+  }
+  if (corner != 0)
+    fail(path, "a facet of the ASCII STL has fewer than 3 vertices");
+  return soup.take();
+}
+
+TriangleMesh read_off(const std::string& data,
+                      const std::filesystem::path& path) {
+  std::istringstream in(data);
+  std::string header;
+  in >> header;
+  std::size_t vertex_count = 0;
+  std::size_t face_count = 0;
+  std::size_t edge_count = 0;
+  if (!(in >> vertex_count >> face_count >> edge_count)) {
+    fail(path, "bad OFF header");
+  }
+  TriangleMesh mesh;
+  mesh.vertices.resize(vertex_count);
+  for (glm::dvec3& p : mesh.vertices) {
+    if (!(in >> p.x >> p.y >> p.z)) fail(path, "bad OFF vertex");
+  }
+  for (std::size_t f = 0; f < face_count; ++f) {
+    std::size_t n = 0;
+    if (!(in >> n) || n < 3) fail(path, "bad OFF face " + std::to_string(f));
+    std::vector<std::uint32_t> polygon(n);
+    for (std::uint32_t& v : polygon) {
+      if (!(in >> v) || v >= vertex_count) {
+        fail(path, "bad vertex index in OFF face " + std::to_string(f));
+      }
+    }
+    in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+    for (std::size_t k = 1; k + 1 < n; ++k) {  // fan: OFF faces are convex
+      mesh.triangles.push_back({polygon[0], polygon[k], polygon[k + 1]});
+    }
+  }
+  return mesh;
+}
+
+glm::vec3 facet_normal(const TriangleMesh& mesh,
+                       const std::array<std::uint32_t, 3>& t) {
+  const glm::dvec3 n = glm::cross(mesh.vertices[t[1]] - mesh.vertices[t[0]],
+                                  mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+  const double length = glm::length(n);
+  return length > 0.0 ? glm::vec3(n / length) : glm::vec3(0.0F);
+}
+
+std::string encode(const TriangleMesh& mesh, MeshFormat format) {
+  std::string out;
+  char line[160];
+  switch (format) {
+    case MeshFormat::StlBinary: {
+      out.assign(80, '\0');
+      const char header[] = "lsolid binary STL, millimetres";
+      std::memcpy(out.data(), header, sizeof(header) - 1);
+      const auto count = static_cast<std::uint32_t>(mesh.triangles.size());
+      out.append(reinterpret_cast<const char*>(&count), 4);
+      out.reserve(84 + 50ULL * count);
+      for (const auto& t : mesh.triangles) {
+        std::array<float, 12> record{};
+        const glm::vec3 n = facet_normal(mesh, t);
+        record[0] = n.x;
+        record[1] = n.y;
+        record[2] = n.z;
+        for (int k = 0; k < 3; ++k) {
+          const glm::dvec3& p = mesh.vertices[t[static_cast<std::size_t>(k)]];
+          record[3 + 3 * k] = static_cast<float>(p.x);
+          record[4 + 3 * k] = static_cast<float>(p.y);
+          record[5 + 3 * k] = static_cast<float>(p.z);
+        }
+        out.append(reinterpret_cast<const char*>(record.data()),
+                   sizeof(record));
+        out.append(2, '\0');
+      }
+      return out;
+    }
+    case MeshFormat::StlAscii:
+      out = "solid lsolid\n";
+      for (const auto& t : mesh.triangles) {
+        const glm::vec3 n = facet_normal(mesh, t);
+        std::snprintf(line, sizeof(line),
+                      " facet normal %.9g %.9g %.9g\n  outer loop\n", n.x, n.y,
+                      n.z);
+        out += line;
+        for (const std::uint32_t v : t) {
+          const glm::vec3 p(mesh.vertices[v]);
+          std::snprintf(line, sizeof(line), "   vertex %.9g %.9g %.9g\n", p.x,
+                        p.y, p.z);
+          out += line;
+        }
+        out += "  endloop\n endfacet\n";
+      }
+      out += "endsolid lsolid\n";
+      return out;
+    case MeshFormat::Off:
+      out = "OFF\n" + std::to_string(mesh.vertices.size()) + " " +
+            std::to_string(mesh.triangles.size()) + " 0\n";
+      for (const glm::dvec3& p : mesh.vertices) {
+        std::snprintf(line, sizeof(line), "%.17g %.17g %.17g\n", p.x, p.y, p.z);
+        out += line;
+      }
+      for (const auto& t : mesh.triangles) {
+        out += "3 " + std::to_string(t[0]) + " " + std::to_string(t[1]) + " " +
+               std::to_string(t[2]) + "\n";
+      }
+      return out;
+  }
+  return out;
+}
+
+}  // namespace
+
+MeshFormat format_for(const std::filesystem::path& path, bool ascii) {
+  const std::string ext = lower_extension(path);
+  if (ext == ".stl")
+    return ascii ? MeshFormat::StlAscii : MeshFormat::StlBinary;
+  if (ext == ".off") return MeshFormat::Off;
+  throw IoError(path.string() + ": unknown output format '" + ext +
+                "' (use .stl or .off)");
+}
+
+TriangleMesh read_mesh(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, std::string("cannot read: ") + std::strerror(errno));
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  const std::string data = buffer.str();
+  const std::string ext = lower_extension(path);
+  if (data.starts_with("OFF") || ext == ".off") return read_off(data, path);
+  if (data.size() >= 84) {
+    std::uint32_t count = 0;
+    std::memcpy(&count, data.data() + 80, 4);
+    if (data.size() == 84 + 50ULL * count) return read_binary_stl(data, path);
+  }
+  if (data.starts_with("solid")) return read_ascii_stl(data, path);
+  fail(path, "not an STL or OFF file");
+}
+
+void write_mesh(const TriangleMesh& mesh, const std::filesystem::path& path,
+                MeshFormat format) {
+  const std::string data = encode(mesh, format);
+  std::filesystem::path folder = path.parent_path();
+  if (folder.empty()) folder = ".";
+  // A hidden temporary beside the target, so that rename stays on one file
+  // system. (Appending piecewise avoids a GCC 12 -Wrestrict false alarm.)
+  std::string name(1, '.');
+  name.append(path.filename().string()).append(".XXXXXX");
+  std::string temp = (folder / name).string();
+  const int fd = ::mkstemp(temp.data());
+  if (fd < 0)
+    fail(path,
+         std::string("cannot create a file here: ") + std::strerror(errno));
+  const auto abandon = [&](const std::string& what) {
+    const int saved = errno;
+    ::close(fd);
+    ::unlink(temp.c_str());
+    fail(path, what + ": " + std::strerror(saved));
+  };
+  std::size_t written = 0;
+  while (written < data.size()) {
+    const ssize_t n = ::write(fd, data.data() + written, data.size() - written);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      abandon("cannot write");
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  // mkstemp makes the file private; give it the mode a new file would get.
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  if (::fchmod(fd, 0666 & ~mask) != 0 || ::fsync(fd) != 0) {
+    abandon("cannot write");
+  }
+  if (::close(fd) != 0) {
+    ::unlink(temp.c_str());
+    fail(path, std::string("cannot write: ") + std::strerror(errno));
+  }
+  if (::rename(temp.c_str(), path.c_str()) != 0) {
+    const int saved = errno;
+    ::unlink(temp.c_str());
+    fail(path,
+         std::string("cannot rename into place: ") + std::strerror(saved));
+  }
+}
+
+}  // namespace lsolid

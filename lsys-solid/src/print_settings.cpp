@@ -1,0 +1,64 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#include "lsolid/print_settings.hpp"
+
+#include "lsolid/units.hpp"
+#include "lsys/diagnostic.hpp"
+
+namespace lsolid {
+namespace {
+
+// Reads a file's length, reporting errors at their place in the file.
+double file_length(const lsys::Grammar& grammar,
+                   const lsys::ExtraSetting& setting) {
+  try {
+    return parse_length_mm(setting.value, setting.key);
+  } catch (const lsys::ParseError& e) {
+    throw lsys::error_at(
+        *grammar.source,
+        setting.offset + static_cast<std::size_t>(e.diagnostic().column - 1),
+        e.diagnostic().message);
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> print_setting_names() {
+  return {"wall", "height", "size", "scale", "tolerance"};
+}
+
+PrintSettings resolve_print_settings(const lsys::Grammar& grammar,
+                                     const PrintSettings& command_line,
+                                     bool command_line_sets_size,
+                                     bool command_line_sets_wall,
+                                     bool command_line_sets_tolerance) {
+  PrintSettings file;
+  int sizes = 0;
+  std::size_t second_size = 0;
+  for (const lsys::ExtraSetting& s : grammar.extra_settings) {
+    const double mm = file_length(grammar, s);
+    if (s.key == "wall") file.wall_mm = mm;
+    if (s.key == "tolerance") file.tolerance_mm = mm;
+    if (s.key == "height" || s.key == "size" || s.key == "scale") {
+      if (++sizes == 2) second_size = s.offset;
+      if (s.key == "height") file.height_mm = mm;
+      if (s.key == "size") file.size_mm = mm;
+      if (s.key == "scale") file.scale_mm_per_unit = mm;
+    }
+  }
+  if (sizes > 1 && !command_line_sets_size) {
+    throw lsys::error_at(*grammar.source, second_size,
+                         "give one of height, size and scale, not several");
+  }
+  PrintSettings out = file;
+  if (command_line_sets_size) {
+    out.height_mm = command_line.height_mm;
+    out.size_mm = command_line.size_mm;
+    out.scale_mm_per_unit = command_line.scale_mm_per_unit;
+  }
+  if (command_line_sets_wall) out.wall_mm = command_line.wall_mm;
+  if (command_line_sets_tolerance) out.tolerance_mm = command_line.tolerance_mm;
+  return out;
+}
+
+}  // namespace lsolid

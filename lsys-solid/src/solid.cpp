@@ -1,0 +1,72 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#include "lsolid/solid.hpp"
+
+#include <chrono>
+
+#include "lsolid/parts.hpp"
+#include "lsolid/rounding.hpp"
+#include "lsolid/scale.hpp"
+
+namespace lsolid {
+namespace {
+
+class Stopwatch {
+ public:
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - start_).count();
+    start_ = now;
+    return seconds;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_ =
+      std::chrono::steady_clock::now();
+};
+
+}  // namespace
+
+Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
+  Solid solid;
+  SolidReport& report = solid.report;
+  Stopwatch clock;
+  const lsys::Skeleton skeleton =
+      lsys::interpret(grammar, options.derivation, options.interpretation);
+  report.segments = skeleton.segments.size();
+  report.polygons = skeleton.polygons.size();
+  report.seconds.skeleton = clock.lap();
+
+  const ScaledSkeleton scaled = scale_to_print(skeleton, options.print);
+  report.mm_per_unit = scaled.mm_per_unit;
+  PartSet parts = build_parts(scaled.skeleton,
+                              {.wall_mm = options.print.wall_mm,
+                               .tolerance_mm = options.print.tolerance_mm});
+  report.tubes = parts.tubes;
+  report.joints = parts.joints;
+  report.plates = parts.plates;
+  report.skipped_polygons = parts.skipped_polygons;
+  report.seconds.parts = clock.lap();
+
+  if (options.unite) {
+    UnionResult united = union_parts(std::move(parts.parts));
+    solid.mesh = std::move(united.mesh);
+    report.union_stats = united.stats;
+  } else {
+    for (const Part& part : parts.parts) append(solid.mesh, part.mesh);
+  }
+  report.seconds.unite = clock.lap();
+  if (options.unite) {
+    solid.mesh = round_and_repair(solid.mesh, options.float_coordinates,
+                                  report.rounding);
+  } else if (options.float_coordinates) {
+    solid.mesh = round_to_float(solid.mesh);
+  }
+  report.seconds.round = clock.lap();
+
+  report.validation = validate(solid.mesh);
+  report.seconds.check = clock.lap();
+  return solid;
+}
+
+}  // namespace lsolid

@@ -1,0 +1,178 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// Topological checks by counting edges; the geometric ones (degenerate
+// faces, self-intersections, orientation) are in cgal/validate_cgal.cpp.
+#include "lsolid/validate.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <numeric>
+#include <unordered_map>
+
+#include "cgal/exact_checks.hpp"
+
+namespace lsolid {
+namespace {
+
+struct EdgeUse {
+  std::uint32_t faces = 0;
+  std::uint32_t forward = 0;  // uses running from the smaller index
+};
+
+std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
+  return (static_cast<std::uint64_t>(std::min(a, b)) << 32U) | std::max(a, b);
+}
+
+class UnionFind {
+ public:
+  explicit UnionFind(std::size_t n) : parent_(n) {
+    std::iota(parent_.begin(), parent_.end(), 0U);
+  }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+    return x;
+  }
+  void join(std::uint32_t a, std::uint32_t b) { parent_[find(a)] = find(b); }
+
+ private:
+  std::vector<std::uint32_t> parent_;
+};
+
+// Vertices whose incident triangles do not form one edge-connected fan.
+std::size_t count_non_manifold_vertices(const TriangleMesh& mesh) {
+  std::vector<std::vector<std::uint32_t>> incident(mesh.vertices.size());
+  for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f) {
+    for (const std::uint32_t v : mesh.triangles[f]) incident[v].push_back(f);
+  }
+  std::size_t count = 0;
+  for (std::uint32_t v = 0; v < incident.size(); ++v) {
+    const auto& faces = incident[v];
+    if (faces.size() < 2) continue;
+    UnionFind fans(faces.size());
+    std::unordered_map<std::uint32_t, std::uint32_t> first_by_neighbour;
+    for (std::uint32_t i = 0; i < faces.size(); ++i) {
+      for (const std::uint32_t w : mesh.triangles[faces[i]]) {
+        if (w == v) continue;
+        const auto [it, inserted] = first_by_neighbour.emplace(w, i);
+        if (!inserted) fans.join(i, it->second);
+      }
+    }
+    const std::uint32_t root = fans.find(0);
+    for (std::uint32_t i = 1; i < faces.size(); ++i) {
+      if (fans.find(i) != root) {
+        ++count;
+        break;
+      }
+    }
+  }
+  return count;
+}
+
+}  // namespace
+
+ValidationReport validate(const TriangleMesh& mesh) {
+  ValidationReport r;
+  r.vertices = mesh.vertices.size();
+  r.triangles = mesh.triangles.size();
+  r.bounds = bounds(mesh);
+  r.volume_mm3 = signed_volume(mesh);
+
+  std::unordered_map<std::uint64_t, EdgeUse> edges;
+  edges.reserve(mesh.triangles.size() * 2);
+  for (const auto& t : mesh.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = t[static_cast<std::size_t>(k)];
+      const std::uint32_t b = t[static_cast<std::size_t>((k + 1) % 3)];
+      if (a == b) continue;  // a degenerate face, counted below
+      EdgeUse& use = edges[edge_key(a, b)];
+      ++use.faces;
+      if (a < b) ++use.forward;
+    }
+  }
+  for (const auto& [key, use] : edges) {
+    if (use.faces == 1) ++r.boundary_edges;
+    if (use.faces > 2) ++r.non_manifold_edges;
+    if (use.faces == 2 && use.forward != 1) ++r.misoriented_edges;
+  }
+  r.non_manifold_vertices = count_non_manifold_vertices(mesh);
+
+  UnionFind shells(mesh.triangles.size());
+  std::unordered_map<std::uint64_t, std::uint32_t> first_face;
+  for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f) {
+    const auto& t = mesh.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      const auto key = edge_key(t[static_cast<std::size_t>(k)],
+                                t[static_cast<std::size_t>((k + 1) % 3)]);
+      const auto [it, inserted] = first_face.emplace(key, f);
+      if (!inserted) shells.join(f, it->second);
+    }
+  }
+  std::unordered_map<std::uint32_t, std::uint32_t> shell_of_root;
+  for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f) {
+    shell_of_root.emplace(shells.find(f),
+                          static_cast<std::uint32_t>(shell_of_root.size()));
+  }
+  r.shells = shell_of_root.size();
+
+  const bool is_edge_manifold = r.non_manifold_edges == 0;
+  const bool is_closed_manifold = is_edge_manifold && r.boundary_edges == 0 &&
+                                  r.non_manifold_vertices == 0 &&
+                                  r.misoriented_edges == 0;
+  if (is_closed_manifold) {
+    // Euler: V - E + F = 2 - 2g for each closed orientable shell.
+    const auto used = [&] {
+      std::vector<bool> seen(mesh.vertices.size(), false);
+      std::size_t n = 0;
+      for (const auto& t : mesh.triangles) {
+        for (const std::uint32_t v : t) {
+          if (!seen[v]) {
+            seen[v] = true;
+            ++n;
+          }
+        }
+      }
+      return n;
+    }();
+    const auto chi = static_cast<long long>(used) -
+                     static_cast<long long>(edges.size()) +
+                     static_cast<long long>(mesh.triangles.size());
+    r.genus =
+        static_cast<int>((2 * static_cast<long long>(r.shells) - chi) / 2);
+  }
+  const ExactChecks exact =
+      exact_checks(mesh, is_edge_manifold, is_closed_manifold);
+  r.degenerate_faces = exact.degenerate_faces;
+  r.self_intersections_checked = exact.self_intersections_checked;
+  r.self_intersecting_pairs = exact.self_intersecting_pairs;
+  r.orientation_checked = exact.orientation_checked;
+  r.is_outward = exact.is_outward;
+  return r;
+}
+
+std::vector<std::string> ValidationReport::problems() const {
+  std::vector<std::string> out;
+  const auto add = [&](std::size_t n, const char* what) {
+    if (n > 0) out.push_back(fmt::format("{} {}", n, what));
+  };
+  if (triangles == 0) out.emplace_back("the mesh is empty");
+  add(boundary_edges, "boundary edges (the mesh is not closed)");
+  add(non_manifold_edges, "non-manifold edges");
+  add(non_manifold_vertices, "non-manifold vertices");
+  add(misoriented_edges, "edges whose triangles disagree on orientation");
+  add(degenerate_faces, "degenerate faces");
+  if (!self_intersections_checked) {
+    out.emplace_back("self-intersections not checked (not edge-manifold)");
+  }
+  add(self_intersecting_pairs, "pairs of self-intersecting triangles");
+  if (orientation_checked && !is_outward) {
+    out.emplace_back(
+        "the surface does not bound a volume with outward normals");
+  }
+  if (triangles > 0 && volume_mm3 <= 0.0)
+    out.emplace_back("the volume is not positive");
+  return out;
+}
+
+}  // namespace lsolid

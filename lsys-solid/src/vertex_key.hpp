@@ -1,0 +1,39 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <array>
+#include <bit>
+#include <cstdint>
+#include <functional>
+#include <glm/vec3.hpp>
+
+namespace lsolid {
+
+/// A point rounded to floats, compared bit for bit: STL's vertex identity.
+using FloatKey = std::array<std::uint32_t, 3>;
+
+inline FloatKey float_key(const glm::dvec3& p) {
+  const auto bits = [](double v) {
+    float f = static_cast<float>(v);
+    if (f == 0.0F) f = 0.0F;  // -0 and +0 are one vertex
+    return std::bit_cast<std::uint32_t>(f);
+  };
+  return {bits(p.x), bits(p.y), bits(p.z)};
+}
+
+inline glm::dvec3 key_point(const FloatKey& k) {
+  return {std::bit_cast<float>(k[0]), std::bit_cast<float>(k[1]),
+          std::bit_cast<float>(k[2])};
+}
+
+struct FloatKeyHash {
+  std::size_t operator()(const FloatKey& k) const noexcept {
+    std::uint64_t h = k[0];
+    h = h * 0x9E3779B97F4A7C15ULL ^ k[1];
+    h = h * 0x9E3779B97F4A7C15ULL ^ k[2];
+    return static_cast<std::size_t>(h ^ (h >> 29U));
+  }
+};
+
+}  // namespace lsolid

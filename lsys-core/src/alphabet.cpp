@@ -42,6 +42,13 @@ std::optional<SymbolId> Alphabet::find(std::string_view name) const {
   return it->second;
 }
 
+bool Alphabet::extends_to_longer_name(std::string_view text) const {
+  for (const std::string& name : long_names_) {
+    if (name.starts_with(text)) return true;
+  }
+  return false;
+}
+
 std::size_t Alphabet::match_length(std::string_view text) const {
   for (const std::string& name : long_names_) {
     if (text.starts_with(name)) return name.size();

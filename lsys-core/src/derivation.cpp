@@ -20,213 +20,30 @@
 #include "lsys/diagnostic.hpp"
 #include "lsys/random.hpp"
 #include "rule_index.hpp"
+#include "size_model.hpp"
 
 namespace lsys {
 namespace {
 
-constexpr double kHuge = 1e300;
-
-std::string count_text(double value) {
-  std::string out;
-  if (value < 1e15) {
-    out = std::to_string(static_cast<std::uint64_t>(value));
-  } else {
-    std::array<char, 32> buffer{};
-    const auto r = std::to_chars(buffer.data(), buffer.data() + buffer.size(),
-                                 value, std::chars_format::scientific, 2);
-    out.assign(buffer.data(), r.ptr);
-  }
-  return out;
-}
-
-bool successor_has_cut(const Successor& s) {
-  return std::find(s.symbols().begin(), s.symbols().end(), kCut) !=
-         s.symbols().end();
-}
-
 bool has_cut(const Grammar& g) {
-  if (successor_has_cut(g.axiom)) return true;
+  const auto cuts = [](const Successor& s) {
+    return std::find(s.symbols().begin(), s.symbols().end(), kCut) !=
+           s.symbols().end();
+  };
+  if (cuts(g.axiom)) return true;
   for (const auto* rules : {&g.productions, &g.decompositions}) {
     for (const Production& p : *rules) {
-      if (successor_has_cut(p.successor)) return true;
+      if (cuts(p.successor)) return true;
     }
   }
   return false;
 }
 
-bool is_drawing(TurtleCommand c) {
-  return c == TurtleCommand::Draw || c == TurtleCommand::DrawNoVertex;
-}
-
-// Segments drawn by interpreting one module, through the homomorphism.
-// Conditional homomorphisms give an upper bound (the largest alternative).
-class SegmentWeights {
- public:
-  SegmentWeights(const Grammar& g, const RuleIndex& homomorphisms)
-      : grammar_(g), homomorphisms_(homomorphisms) {}
-
-  double weight(SymbolId symbol, int arity, int depth = 0) {
-    const auto key = std::tuple{symbol, arity, depth};
-    if (const auto it = memo_.find(key); it != memo_.end()) return it->second;
-    double best = -1.0;
-    if (depth < grammar_.settings.maximum_depth) {
-      for (const Production* rule : homomorphisms_.rules_for(symbol)) {
-        if (rule->predecessor.parameter_count != arity) continue;
-        double sum = 0.0;
-        for (const ModuleTemplate& m : rule->successor.modules()) {
-          sum += weight(m.symbol, static_cast<int>(m.parameters.size()),
-                        depth + 1);
-        }
-        best = std::max(best, std::min(sum, kHuge));
-        if (!rule->condition) break;  // later rules never apply
-      }
-    }
-    if (best < 0.0) best = is_drawing(grammar_.commands[symbol]) ? 1.0 : 0.0;
-    memo_[key] = best;
-    return best;
-  }
-
-  // An upper bound for any arity, for counting while streaming.
-  double any_arity(SymbolId symbol) {
-    double best = weight(symbol, 0);
-    for (const Production* rule : homomorphisms_.rules_for(symbol)) {
-      best = std::max(best, weight(symbol, rule->predecessor.parameter_count));
-    }
-    return best;
-  }
-
- private:
-  const Grammar& grammar_;
-  const RuleIndex& homomorphisms_;
-  std::map<std::tuple<SymbolId, int, int>, double> memo_;
-};
-
-bool is_predictable(const Grammar& g) {
-  for (const auto* rules : {&g.productions, &g.decompositions}) {
-    for (const Production& p : *rules) {
-      if (p.condition || p.probability || p.is_context_sensitive()) {
-        return false;
-      }
-    }
-  }
-  for (const Production& p : g.homomorphisms) {
-    if (p.condition) return false;
-  }
-  return !has_cut(g);
-}
-
-// The count matrix over (symbol, arity) kinds, with decomposition folded in.
-class CountMatrix {
- public:
-  CountMatrix(const Grammar& g, const RuleIndex& productions,
-              const RuleIndex& decompositions)
-      : grammar_(g),
-        productions_(productions),
-        decompositions_(decompositions) {}
-
-  SizePrediction predict(int n, SegmentWeights& weights) {
-    std::vector<double> v;
-    for (const ModuleTemplate& m : grammar_.axiom.modules()) {
-      add(v, decomposed(kind(m), 0));
-    }
-    // Rows of the matrix: what one step makes of each kind. Computing a row
-    // may add kinds, so rows are filled on demand.
-    std::vector<std::vector<double>> rows;
-    for (int step = 0; step < n; ++step) {
-      std::vector<double> next;
-      for (std::size_t k = 0; k < v.size(); ++k) {
-        if (v[k] == 0.0) continue;
-        while (rows.size() <= k) rows.push_back(row(rows.size()));
-        add(next, rows[k], v[k]);
-      }
-      v = std::move(next);
-    }
-    SizePrediction p{.is_exact = true};
-    for (std::size_t k = 0; k < v.size(); ++k) {
-      p.modules = std::min(kHuge, p.modules + v[k]);
-      p.segments =
-          std::min(kHuge, p.segments + v[k] * weights.weight(kinds_[k].first,
-                                                             kinds_[k].second));
-    }
-    return p;
-  }
-
- private:
-  std::size_t kind(SymbolId symbol, int arity) {
-    const auto key = std::pair{symbol, arity};
-    const auto it = std::find(kinds_.begin(), kinds_.end(), key);
-    if (it != kinds_.end())
-      return static_cast<std::size_t>(it - kinds_.begin());
-    kinds_.push_back(key);
-    return kinds_.size() - 1;
-  }
-  std::size_t kind(const ModuleTemplate& m) {
-    return kind(m.symbol, static_cast<int>(m.parameters.size()));
-  }
-
-  static void add(std::vector<double>& to, const std::vector<double>& from,
-                  double times = 1.0) {
-    if (to.size() < from.size()) to.resize(from.size(), 0.0);
-    for (std::size_t i = 0; i < from.size(); ++i) {
-      to[i] = std::min(kHuge, to[i] + times * from[i]);
-    }
-  }
-
-  const Production* rule_for(const RuleIndex& index, std::size_t k) const {
-    for (const Production* rule : index.rules_for(kinds_[k].first)) {
-      if (rule->predecessor.parameter_count == kinds_[k].second) return rule;
-    }
-    return nullptr;
-  }
-
-  std::vector<double> decomposed(std::size_t k, int depth) {
-    const Production* rule = depth < grammar_.settings.maximum_depth
-                                 ? rule_for(decompositions_, k)
-                                 : nullptr;
-    std::vector<double> out;
-    if (rule == nullptr) {
-      out.resize(k + 1, 0.0);
-      out[k] = 1.0;
-      return out;
-    }
-    for (const ModuleTemplate& m : rule->successor.modules()) {
-      add(out, decomposed(kind(m), depth + 1));
-    }
-    return out;
-  }
-
-  std::vector<double> row(std::size_t k) {
-    const Production* rule = rule_for(productions_, k);
-    if (rule == nullptr) {
-      std::vector<double> out(k + 1, 0.0);
-      out[k] = 1.0;
-      return out;
-    }
-    std::vector<double> out;
-    for (const ModuleTemplate& m : rule->successor.modules()) {
-      add(out, decomposed(kind(m), 0));
-    }
-    return out;
-  }
-
-  const Grammar& grammar_;
-  const RuleIndex& productions_;
-  const RuleIndex& decompositions_;
-  std::vector<std::pair<SymbolId, int>> kinds_;
-};
-
 }  // namespace
 
 std::optional<SizePrediction> predict_size(const Grammar& grammar,
                                            int derivation_length) {
-  if (!is_predictable(grammar)) return std::nullopt;
-  const RuleIndex productions(grammar.productions, grammar.alphabet.size());
-  const RuleIndex decompositions(grammar.decompositions,
-                                 grammar.alphabet.size());
-  const RuleIndex homomorphisms(grammar.homomorphisms, grammar.alphabet.size());
-  SegmentWeights weights(grammar, homomorphisms);
-  return CountMatrix(grammar, productions, decompositions)
-      .predict(derivation_length, weights);
+  return exact_size(grammar, derivation_length);
 }
 
 class Derivation::Impl {
@@ -239,8 +56,7 @@ class Derivation::Impl {
         seed_(options.seed.value_or(grammar.settings.seed)),
         productions_(grammar.productions, grammar.alphabet.size()),
         decompositions_(grammar.decompositions, grammar.alphabet.size()),
-        homomorphisms_(grammar.homomorphisms, grammar.alphabet.size()),
-        weights_(grammar, homomorphisms_) {
+        costs_(grammar, false) {
     for (const Production& p : grammar.productions) {
       is_context_sensitive_ = is_context_sensitive_ || p.is_context_sensitive();
       if (p.probability) {
@@ -287,36 +103,32 @@ class Derivation::Impl {
     std::uint32_t depth;
   };
 
-  // Where limit errors point: the `n` setting, else the axiom.
-  std::size_t limit_offset() const {
-    if (!options_.derivation_length &&
-        grammar_.settings.derivation_length_offset) {
-      return *grammar_.settings.derivation_length_offset;
-    }
-    return grammar_.axiom_offset;
-  }
-
   [[noreturn]] void refuse(const std::string& what) const {
-    throw error_at(*grammar_.source, limit_offset(),
-                   "n = " + std::to_string(n_) + " " + what);
+    throw limit_error(grammar_, options_, n_, what);
   }
 
+  // Refuses at once when the exact size, or a lower bound of it, is above a
+  // limit; where the size is exact and within the limits, nothing needs
+  // counting while deriving.
   void check_prediction() {
-    prediction_ = predict_size(grammar_, n_);
-    if (!prediction_) return;
+    prediction_ = exact_size(grammar_, n_);
+    const std::optional<SizePrediction> bound =
+        prediction_ ? prediction_ : size_lower_bound(grammar_, n_);
+    if (!bound) return;
+    const std::string at_least = prediction_ ? "" : "at least ";
     const auto max_modules = static_cast<double>(options_.max_modules);
     const auto max_segments = static_cast<double>(options_.max_segments);
-    if (prediction_->segments > max_segments) {
-      refuse("would draw " + count_text(prediction_->segments) +
+    if (bound->segments > max_segments) {
+      refuse("would draw " + at_least + count_text(bound->segments) +
              " segments, more than the limit of " + count_text(max_segments) +
              " (--max-segments)");
     }
-    if (prediction_->modules > max_modules) {
-      refuse("would derive a string of " + count_text(prediction_->modules) +
-             " modules, more than the limit of " + count_text(max_modules) +
-             " (--max-modules)");
+    if (bound->modules > max_modules) {
+      refuse("would derive a string of " + at_least +
+             count_text(bound->modules) + " modules, more than the limit of " +
+             count_text(max_modules) + " (--max-modules)");
     }
-    is_counting_ = false;
+    if (prediction_) is_counting_ = false;
   }
 
   void count(SymbolId symbol) {
@@ -328,7 +140,7 @@ class Derivation::Impl {
     if (segment_weight_.empty())
       segment_weight_.resize(grammar_.alphabet.size(), -1.0);
     double& weight = segment_weight_[symbol];
-    if (weight < 0.0) weight = weights_.any_arity(symbol);
+    if (weight < 0.0) weight = costs_.segments_any_arity(symbol);
     segments_ += weight;
     if (segments_ > static_cast<double>(options_.max_segments)) {
       refuse("draws more than the limit of " +
@@ -471,6 +283,9 @@ class Derivation::Impl {
 
   static bool same_module(const ModuleString& s, std::size_t i,
                           const PatternModule& p) {
+    if (p.symbol == kAnyModule) {
+      return s.symbol(i) != kBranchOpen && s.symbol(i) != kBranchClose;
+    }
     return s.symbol(i) == p.symbol &&
            s.parameters(i).size() ==
                static_cast<std::size_t>(p.parameter_count);
@@ -496,8 +311,9 @@ class Derivation::Impl {
       if (!same_module(s, j, pattern[t])) return false;
       matched_[t] = j;
     }
-    for (std::size_t t : matched_) {
-      const auto p = s.parameters(t);
+    for (std::size_t t = 0; t < pattern.size(); ++t) {
+      if (pattern[t].symbol == kAnyModule) continue;  // binds nothing
+      const auto p = s.parameters(matched_[t]);
       slots_.insert(slots_.end(), p.begin(), p.end());
     }
     return true;
@@ -531,7 +347,7 @@ class Derivation::Impl {
       if (!same_module(s, j, p)) return false;
       if (p.symbol == kBranchOpen) {
         open_.push_back(j);
-      } else {
+      } else if (p.symbol != kAnyModule) {
         const auto params = s.parameters(j);
         slots_.insert(slots_.end(), params.begin(), params.end());
       }
@@ -545,7 +361,11 @@ class Derivation::Impl {
     if (!rule.left_context.empty() && !match_left(s, i, rule.left_context)) {
       return false;
     }
-    if (!same_module(s, i, rule.predecessor)) return false;
+    if (s.symbol(i) != rule.predecessor.symbol ||
+        s.parameters(i).size() !=
+            static_cast<std::size_t>(rule.predecessor.parameter_count)) {
+      return false;
+    }
     const auto params = s.parameters(i);
     slots_.insert(slots_.end(), params.begin(), params.end());
     if (!rule.right_context.empty() && !match_right(s, i, rule.right_context)) {
@@ -676,8 +496,7 @@ class Derivation::Impl {
   std::uint64_t seed_;
   RuleIndex productions_;
   RuleIndex decompositions_;
-  RuleIndex homomorphisms_;
-  SegmentWeights weights_;
+  InterpretationCosts costs_;
   std::optional<SizePrediction> prediction_;
   bool is_context_sensitive_ = false;
   bool is_stochastic_ = false;

@@ -25,6 +25,8 @@ using Op = Expression::Op;
 using Instruction = Expression::Instruction;
 
 constexpr int kMaxStack = 64;
+constexpr int kMaxNesting = 200;
+constexpr std::size_t kMaxNodes = 4096;
 constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
 
 struct Function {
@@ -203,6 +205,7 @@ class Compiler {
   }
 
   int add(Op op, std::size_t offset, int a = -1, int b = -1) {
+    if (nodes_.size() >= kMaxNodes) fail(offset, "expression is too long");
     nodes_.push_back(Node{Instruction{.op = op, .offset = offset}, a, b});
     return static_cast<int>(nodes_.size()) - 1;
   }
@@ -311,7 +314,21 @@ class Compiler {
     }
   }
 
+  // Recursion guard: deeply nested input must not exhaust the stack.
+  struct Nesting {
+    explicit Nesting(Compiler& c) : compiler(c) {
+      if (++compiler.nesting_ > kMaxNesting) {
+        compiler.fail(compiler.pos_, "expression is nested too deeply");
+      }
+    }
+    ~Nesting() { --compiler.nesting_; }
+    Nesting(const Nesting&) = delete;
+    Nesting& operator=(const Nesting&) = delete;
+    Compiler& compiler;
+  };
+
   int parse_unary() {
+    const Nesting guard(*this);
     skip_space();
     const std::size_t at = pos_;
     if (accept("-") || accept("\u2212")) {
@@ -355,7 +372,8 @@ class Compiler {
 
   bool is_operator_code_point() const {
     for (std::string_view op : {"\u2264", "\u2265", "\u2260", "\u2212",
-                                "\u00D7", "\u00B7", "\u00B0"}) {
+                                "\u00D7", "\u00B7", "\u00B0", "\u00BA",
+                                "\u02DA", "\u25E6"}) {
       if (text_.substr(pos_).starts_with(op)) return true;
     }
     return false;
@@ -380,7 +398,10 @@ class Compiler {
       fail(at, "bad number '" + std::string(token) + "'");
     }
     pos_ = end;
-    accept("\u00B0");  // 45° is 45: angles are in degrees anyway
+    // 45° is 45: angles are in degrees anyway. PDFs also give º, ˚ and ◦.
+    for (std::string_view degree : {"\u00B0", "\u00BA", "\u02DA", "\u25E6"}) {
+      if (accept(degree)) break;
+    }
     const int node = add(Op::Constant, at);
     nodes_.back().instruction.value = value;
     return node;
@@ -417,6 +438,7 @@ class Compiler {
           it != scope_.constants->end()) {
         const int node = add(Op::Constant, at);
         nodes_.back().instruction.value = it->second;
+        if (scope_.used_constants != nullptr) scope_.used_constants->insert(name);
         return node;
       }
     }
@@ -462,6 +484,7 @@ class Compiler {
   std::size_t pos_;
   const ExpressionScope& scope_;
   std::vector<Node> nodes_;
+  int nesting_ = 0;
 };
 
 }  // namespace

@@ -7,10 +7,13 @@
 #include "lsys/interpretation.hpp"
 
 #include <algorithm>
+#include <functional>
+#include <limits>
 #include <glm/geometric.hpp>
 
 #include "lsys/turtle.hpp"
 #include "rule_index.hpp"
+#include "size_model.hpp"
 
 namespace lsys {
 namespace {
@@ -46,6 +49,13 @@ class Interpreter {
 
   void reserve(std::size_t segments) { skeleton_.segments.reserve(segments); }
 
+  // A homomorphism can multiply the modules the turtle reads without
+  // drawing anything; `on_limit` throws when more than `most` are read.
+  void limit_modules(std::uint64_t most, std::function<void()> on_limit) {
+    max_modules_ = most;
+    on_limit_ = std::move(on_limit);
+  }
+
   void run(const ModuleString& modules) {
     for (std::size_t i = 0; i < modules.size(); ++i) {
       interpret(modules.symbol(i), modules.parameters(i), modules.generation(i),
@@ -54,7 +64,7 @@ class Interpreter {
   }
 
   Skeleton finish() {
-    skeleton_.degenerate_polygons += polygons_.size();
+    skeleton_.unclosed_polygons += polygons_.size();
     polygons_.clear();
     return std::move(skeleton_);
   }
@@ -79,6 +89,7 @@ class Interpreter {
         return;
       }
     }
+    if (++modules_read_ > max_modules_) on_limit_();
     execute(grammar_.commands[symbol], params, generation);
   }
 
@@ -226,7 +237,10 @@ class Interpreter {
   }
 
   void close_polygon() {
-    if (polygons_.empty()) return;
+    if (polygons_.empty()) {
+      ++skeleton_.unmatched_polygon_ends;
+      return;
+    }
     Polygon polygon = std::move(polygons_.back());
     polygons_.pop_back();
     auto& points = polygon.points;
@@ -249,6 +263,9 @@ class Interpreter {
   std::vector<Polygon> polygons_;  // open ones, innermost last
   std::vector<std::vector<double>> buffers_;
   Skeleton skeleton_;
+  std::uint64_t modules_read_ = 0;
+  std::uint64_t max_modules_ = std::numeric_limits<std::uint64_t>::max();
+  std::function<void()> on_limit_;
 };
 
 }  // namespace
@@ -257,6 +274,22 @@ Skeleton interpret(const Grammar& grammar, const DerivationOptions& derivation,
                    const InterpretOptions& options) {
   Derivation d(grammar, derivation);
   Interpreter interpreter(grammar, options);
+  const int n = d.derivation_length();
+  const std::string limit =
+      " modules after the homomorphism, more than the limit of " +
+      count_text(static_cast<double>(derivation.max_modules)) + " (--max-modules)";
+  if (d.prediction() && d.prediction()->interpreted_modules >
+                            static_cast<double>(derivation.max_modules)) {
+    throw limit_error(grammar, derivation, n,
+                      "would make the turtle read " +
+                          count_text(d.prediction()->interpreted_modules) + limit);
+  }
+  interpreter.limit_modules(derivation.max_modules, [&] {
+    throw limit_error(grammar, derivation, n,
+                      "makes the turtle read more than " +
+                          count_text(static_cast<double>(derivation.max_modules)) +
+                          " modules after the homomorphism (--max-modules)");
+  });
   if (d.prediction()) {
     interpreter.reserve(static_cast<std::size_t>(
         std::min(d.prediction()->segments,

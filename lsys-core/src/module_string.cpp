@@ -31,8 +31,13 @@ void append_module_separated(std::string& out, const Alphabet& alphabet,
                              const ModuleString& modules, std::size_t i,
                              const SymbolId* previous) {
   const SymbolId symbol = modules.symbol(i);
-  if (previous != nullptr && (alphabet.is_multi_character(*previous) ||
-                              alphabet.is_multi_character(symbol))) {
+  // A space keeps modules apart where reading back would join them: next to
+  // a multi-character name, and where two names would start a longer one.
+  if (previous != nullptr &&
+      (alphabet.is_multi_character(*previous) ||
+       alphabet.is_multi_character(symbol) ||
+       alphabet.extends_to_longer_name(alphabet.name(*previous) +
+                                       alphabet.name(symbol)))) {
     out += ' ';
   }
   append_module(out, alphabet, symbol, modules.parameters(i));

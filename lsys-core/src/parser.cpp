@@ -15,6 +15,7 @@
 #include <cctype>
 #include <cmath>
 #include <optional>
+#include <set>
 #include <string_view>
 #include <unordered_map>
 #include <unordered_set>
@@ -183,7 +184,7 @@ class Parser {
 
   Grammar run() {
     grammar_.source = source_;
-    for (const char* name : {"[", "]", "%"}) grammar_.alphabet.intern(name);
+    for (const char* name : {"[", "]", "%", "*"}) grammar_.alphabet.intern(name);
     // Multi-character turtle modules must be known to the tokeniser.
     for (const char* name : {"@v", "@Tp", "@Ts"})
       grammar_.alphabet.intern(name);
@@ -191,10 +192,18 @@ class Parser {
     declare_names();
     evaluate_defines();
     read_aliases();
+    read_module_declarations();
     read_settings();
     read_axiom();
     for (const ProductionText& p : productions_) read_production(p);
     build_commands();
+    for (const std::string& name : given_defines_) {
+      if (used_constants_.count(name) == 0 && !file_defines_.count(name)) {
+        grammar_.warnings.push_back("--define " + name +
+                                    ": the file neither defines nor uses '" +
+                                    name + "'");
+      }
+    }
     return std::move(grammar_);
   }
 
@@ -390,6 +399,16 @@ class Parser {
     return std::nullopt;
   }
 
+  // `name:` or `name =` (a setting's start, known or not).
+  bool starts_with_name_and_separator(Range r) const {
+    std::size_t i = r.begin;
+    while (i < r.end && (is_word_char(text_[i]) || text_[i] == ' ')) ++i;
+    if (i == r.begin || i >= r.end) return false;
+    if (std::isdigit(static_cast<unsigned char>(text_[r.begin])) != 0) return false;
+    return (text_[i] == ':' && text_.substr(i, 3) != "::=") ||
+           (text_[i] == '=' && text_.substr(i, 2) != "==");
+  }
+
   void add_settings(Range line) {
     // `n=2, δ=90°`: split at commas that are followed by another setting.
     std::vector<std::size_t> cuts;
@@ -398,7 +417,7 @@ class Parser {
       if (text_[i] == '(') ++depth;
       if (text_[i] == ')') --depth;
       if (depth == 0 && text_[i] == ',' &&
-          match_key(trim(Range{i + 1, line.end}))) {
+          starts_with_name_and_separator(trim(Range{i + 1, line.end}))) {
         cuts.push_back(i);
       }
     }
@@ -407,10 +426,23 @@ class Parser {
     for (std::size_t cut : cuts) {
       const Range piece = trim(Range{start, cut});
       const auto match = match_key(piece);
-      if (!match) fail(piece.begin, "expected a setting");
-      settings_.push_back(SettingText{
-          match->key, match->extra, Range{piece.begin, match->key_end},
-          trim(Range{match->value_begin, piece.end})});
+      if (!match) {
+        std::size_t end = piece.begin;
+        while (end < piece.end && (is_word_char(text_[end]) || text_[end] == ' ')) ++end;
+        fail(piece.begin, "unknown setting '" +
+                              std::string(view(trim(Range{piece.begin, end}))) + "'");
+      }
+      Range value{match->value_begin, piece.end};
+      // `n=2 // two`: numbers never contain `//`; modules (the axiom, lists)
+      // may, as rolls.
+      if (match->key != Key::Axiom && match->key != Key::Ignore &&
+          match->key != Key::Consider) {
+        const std::size_t comment = text_.find("//", value.begin);
+        if (comment < value.end) value.end = comment;
+      }
+      settings_.push_back(SettingText{match->key, match->extra,
+                                      Range{piece.begin, match->key_end},
+                                      trim(value)});
       start = cut + 1;
     }
   }
@@ -440,9 +472,60 @@ class Parser {
     return true;
   }
 
+  // True for text that can only be a value: digits, operators, parentheses
+  // and a degree sign (`90`, `0.5*2`, `22.5°`), not modules.
+  bool is_value_text(Range r) const {
+    const std::string_view v = view(trim(r));
+    return !v.empty() &&
+           std::all_of(v.begin(), v.end(),
+                       [](char c) {
+                         return std::isdigit(static_cast<unsigned char>(c)) != 0 ||
+                                std::string_view(".-+*/^() eE\xC2\xB0").find(c) !=
+                                    std::string_view::npos;
+                       }) &&
+           std::any_of(v.begin(), v.end(), [](char c) {
+             return std::isdigit(static_cast<unsigned char>(c)) != 0;
+           });
+  }
+
+  // `anlge=90, n=2`: a line of `name = value` pieces where a piece names a
+  // known setting, or gives a number to a multi-letter word, is a settings
+  // line, and its unknown names are errors (not Houdini `=` productions).
+  void reject_misspelt_settings(Range line) const {
+    bool is_settings_line = false;
+    std::vector<Range> unknown;
+    for (const Range& raw : split_top(line, ',')) {
+      const Range piece = trim(raw);
+      if (match_key(piece)) {
+        is_settings_line = true;
+        continue;
+      }
+      const std::size_t equals = find_equals(piece);
+      if (equals == std::string::npos) return;
+      const Range word = trim(Range{piece.begin, equals});
+      const std::string_view name = view(word);
+      if (name.empty() || !std::all_of(name.begin(), name.end(), [](char c) {
+            return is_word_char(c) || c == ' ';
+          })) {
+        return;
+      }
+      if (code_point_length(name) < name.size() &&
+          declared_modules_.count(std::string(name)) == 0 &&
+          is_value_text(Range{equals + 1, piece.end})) {
+        is_settings_line = true;
+      }
+      unknown.push_back(word);
+    }
+    if (is_settings_line && !unknown.empty()) {
+      fail(unknown.front().begin,
+           "unknown setting '" + std::string(view(unknown.front())) + "'");
+    }
+  }
+
   // A word before `:`, or a multi-letter word before `= number`, reads as a
   // setting; an ABOP label such as `p1:` does not.
   void reject_unknown_setting(Range line) const {
+    reject_misspelt_settings(line);
     std::size_t i = line.begin;
     while (i < line.end && (is_word_char(text_[i]) || text_[i] == ' ')) ++i;
     const Range word = trim(Range{line.begin, i});
@@ -554,8 +637,8 @@ class Parser {
         if (text_[pos] == ':') ++pos;
         const Range names = trim(Range{pos, line.end});
         module_lines_.push_back(names);
-        for (const Range& piece : module_names(names)) {
-          declared_modules_.insert(std::string(view(piece)));
+        for (const DeclaredName& declared : module_names(names)) {
+          declared_modules_.insert(std::string(view(declared.name)));
         }
         return false;
       }
@@ -616,28 +699,38 @@ class Parser {
     fail(line.begin, "unknown directive '#" + std::string(word) + "'");
   }
 
-  std::vector<Range> module_names(Range names) const {
-    std::vector<Range> out;
+  struct DeclaredName {
+    Range name;
+    int parameter_count = 0;  // of `bud(x)`; 0 without a list
+  };
+
+  // The names of a `module` line: `plant, internode seg, bud(x)`.
+  std::vector<DeclaredName> module_names(Range names) const {
+    std::vector<DeclaredName> out;
     std::size_t i = names.begin;
     while (i < names.end) {
       while (i < names.end && (is_blank(text_[i]) || text_[i] == ',')) ++i;
       if (i >= names.end) break;
       std::size_t j = i;
-      int depth = 0;
-      while (j < names.end) {
-        if (text_[j] == '(') ++depth;
-        if (text_[j] == ')') --depth;
-        if (depth == 0 &&
-            (is_blank(text_[j]) || text_[j] == ',' || text_[j] == '(')) {
-          break;
-        }
+      while (j < names.end && !is_blank(text_[j]) && text_[j] != ',' &&
+             text_[j] != '(') {
         ++j;
       }
-      out.push_back(Range{i, j});
+      DeclaredName declared{Range{i, j}};
+      while (j < names.end && is_blank(text_[j])) ++j;
       if (j < names.end && text_[j] == '(') {
-        while (j < names.end && text_[j] != ')') ++j;
-        ++j;
+        const std::size_t close = text_.find(')', j);
+        if (close == std::string::npos || close >= names.end) {
+          fail(j, "unclosed '('");
+        }
+        const Range inside = trim(Range{j + 1, close});
+        if (!inside.empty()) {
+          declared.parameter_count =
+              static_cast<int>(split_top(inside, ',').size());
+        }
+        j = close + 1;
       }
+      out.push_back(declared);
       i = j;
     }
     return out;
@@ -702,8 +795,8 @@ class Parser {
   // The module name of a predecessor, before any parameter list.
   void declare_names() {
     for (const Range& names : module_lines_) {
-      for (const Range& piece : module_names(names)) {
-        grammar_.alphabet.intern(view(piece));
+      for (const DeclaredName& declared : module_names(names)) {
+        grammar_.alphabet.intern(view(declared.name));
       }
     }
     for (const ProductionText& p : productions_) {
@@ -734,9 +827,10 @@ class Parser {
       }
       const Expression value =
           parse_expression(source, equals + 1, define.size(),
-                           ExpressionScope{.constants = &grammar_.constants});
+                           ExpressionScope{.constants = &grammar_.constants, .used_constants = &used_constants_});
       grammar_.constants[name] = value.constant_value();
       given.insert(name);
+      given_defines_.push_back(name);
     }
     std::unordered_map<std::string, std::size_t> seen;
     for (const auto& [name_range, value] : defines_) {
@@ -747,6 +841,7 @@ class Parser {
                  std::to_string(source_->location(it->second).line) + ")");
       }
       seen.emplace(name, name_range.begin);
+      file_defines_.insert(name);
       if (given.count(name) != 0) continue;  // --define wins
       grammar_.constants[name] = constant(value);
     }
@@ -754,7 +849,7 @@ class Parser {
 
   double constant(Range r) const {
     return parse_expression(source_, r.begin, r.end,
-                            ExpressionScope{.constants = &grammar_.constants})
+                            ExpressionScope{.constants = &grammar_.constants, .used_constants = &used_constants_})
         .constant_value();
   }
 
@@ -807,6 +902,18 @@ class Parser {
                "duplicate alias for '" + std::string(view(from)) + "'");
         }
         aliases_.emplace(symbol, *command);
+      }
+    }
+  }
+
+  // `module bud(x)` fixes bud's parameter count; `module leaf` only
+  // declares the name.
+  void read_module_declarations() {
+    for (const Range& names : module_lines_) {
+      for (const DeclaredName& declared : module_names(names)) {
+        if (declared.parameter_count == 0) continue;
+        check_arity(*grammar_.alphabet.find(view(declared.name)),
+                    declared.parameter_count, declared.name.begin);
       }
     }
   }
@@ -939,8 +1046,13 @@ class Parser {
       if (bracket && !allow_brackets) {
         fail(raw.offset, bracket_error);
       }
-      check_arity(raw.symbol, static_cast<int>(raw.arguments.size()),
-                  raw.offset);
+      if (raw.symbol == kAnyModule && !raw.arguments.empty()) {
+        fail(raw.offset, "'*' in a context matches any module and takes no parameters");
+      }
+      if (raw.symbol != kAnyModule) {
+        check_arity(raw.symbol, static_cast<int>(raw.arguments.size()),
+                    raw.offset);
+      }
       for (const Range& arg : raw.arguments) {
         const Range name = trim(arg);
         const std::string formal(view(name));
@@ -983,7 +1095,8 @@ class Parser {
       p.right_context = pattern(lhs.right, slots, true, "");
     }
     const ExpressionScope scope{.parameters = slots,
-                                .constants = &grammar_.constants};
+                                .constants = &grammar_.constants,
+                                .used_constants = &used_constants_};
     if (lhs.condition) {
       p.condition = parse_expression(source_, lhs.condition->begin,
                                      lhs.condition->end, scope);
@@ -1044,7 +1157,8 @@ class Parser {
           .message = "no axiom: give one as 'axiom: F', 'ω: F' or a line of "
                      "modules before the productions"});
     }
-    const ExpressionScope scope{.constants = &grammar_.constants};
+    const ExpressionScope scope{.constants = &grammar_.constants,
+                                .used_constants = &used_constants_};
     grammar_.axiom = Successor(modules({*axiom_}, scope));
     grammar_.axiom_offset = axiom_->begin;
   }
@@ -1188,6 +1302,18 @@ class Parser {
         case Key::Extra:
           break;
       }
+      const auto both = [&](Key a, Key b, const char* what) {
+        if (seen.count(static_cast<int>(a)) != 0 &&
+            seen.count(static_cast<int>(b)) != 0) {
+          fail(setting.key_range.begin, what);
+        }
+      };
+      both(Key::Angle, Key::AngleFactor,
+           "give either 'angle' or 'angle factor', not both");
+      both(Key::Width, Key::Radius, "give either 'width' or 'radius', not both");
+      both(Key::WidthPerGeneration, Key::RadiusPerGeneration,
+           "give either 'width decrement per generation' or 'radius "
+           "reduction per generation', not both");
       if (has_increment && has_factor) {
         fail(setting.key_range.begin,
              "give either 'width increment' or 'width factor', not both");
@@ -1244,6 +1370,9 @@ class Parser {
   std::unordered_set<std::string> declared_modules_;
   std::unordered_map<SymbolId, TurtleCommand> aliases_;
   std::unordered_map<SymbolId, std::pair<int, std::size_t>> arity_;
+  mutable std::set<std::string> used_constants_;  // filled while compiling
+  std::vector<std::string> given_defines_;
+  std::set<std::string> file_defines_;
 };
 
 }  // namespace

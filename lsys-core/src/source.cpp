@@ -15,6 +15,14 @@ namespace lsys {
 
 SourceFile::SourceFile(std::string name, std::string text)
     : name_(std::move(name)), text_(std::move(text)) {
+  // A UTF-8 byte order mark is not part of the text; old Mac files end
+  // lines with a lone CR.
+  if (text_.starts_with("\xEF\xBB\xBF")) text_.erase(0, 3);
+  for (std::size_t i = 0; i < text_.size(); ++i) {
+    if (text_[i] == '\r' && (i + 1 == text_.size() || text_[i + 1] != '\n')) {
+      text_[i] = '\n';
+    }
+  }
   line_starts_.push_back(0);
   for (std::size_t i = 0; i < text_.size(); ++i) {
     if (text_[i] == '\n' && i + 1 < text_.size()) line_starts_.push_back(i + 1);

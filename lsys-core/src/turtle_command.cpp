@@ -8,13 +8,14 @@
 namespace lsys {
 namespace {
 
-// ABOP p. 209 and the cpfg manual for the single characters; `∧` is how
-// seed 000 and typeset ABOP print `^`; `@v`, `@Tp`, `@Ts` are L-Py's and
+// ABOP p. 209 and the cpfg manual for the single characters; `∧` and `−`
+// (U+2212) are how seed 000 and typeset ABOP print `^` and `-`; `@v`, `@Tp`, `@Ts` are L-Py's and
 // cpfg's spellings.
-constexpr std::array<std::pair<std::string_view, TurtleCommand>, 27> kNames{{
+constexpr std::array<std::pair<std::string_view, TurtleCommand>, 28> kNames{{
     {"F", TurtleCommand::Draw},           {"f", TurtleCommand::Move},
     {"G", TurtleCommand::DrawNoVertex},   {"g", TurtleCommand::MoveNoVertex},
     {"+", TurtleCommand::TurnLeft},       {"-", TurtleCommand::TurnRight},
+    {"\u2212", TurtleCommand::TurnRight},
     {"&", TurtleCommand::PitchDown},      {"^", TurtleCommand::PitchUp},
     {"\u2227", TurtleCommand::PitchUp},   {"/", TurtleCommand::RollRight},
     {"\\", TurtleCommand::RollLeft},      {"|", TurtleCommand::TurnAround},

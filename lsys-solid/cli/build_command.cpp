@@ -75,6 +75,7 @@ int run_build(const BuildCommand& command) {
   options.unite = !command.no_union;
   options.float_coordinates = format != MeshFormat::Off;
   const Solid solid = build_solid(grammar, options);
+  warn_about_polygons(solid.report.dropped);
   print_report(solid.report, options.unite);
   if (!solid.report.validation.is_printable() && options.unite) {
     std::fprintf(stderr,

@@ -29,7 +29,11 @@ struct GrammarInput {
 /// Registers FILE, -n, --seed, --define, --max-segments, --max-modules and
 /// (with `with_roll`) --roll on a command.
 void add_grammar_options(CLI::App& command, GrammarInput& input,
-                         bool with_roll);
+                         bool with_roll, bool is_file_required = true);
+
+/// Warns on standard error about polygons the turtle dropped: unclosed,
+/// unmatched `}`, fewer than 3 distinct points.
+void warn_about_polygons(const lsys::Skeleton& skeleton);
 
 /// Reads the file with the command line's defines.
 /// @throws lsys::ParseError.

@@ -1,6 +1,7 @@
 // Copyright 2026 the lsolid authors
 // SPDX-License-Identifier: MIT
 #include <algorithm>
+#include <cstdio>
 #include <vector>
 
 #include "commands.hpp"
@@ -34,16 +35,17 @@ void append_json_string(std::string& out, const std::string& text) {
 }  // namespace
 
 void add_grammar_options(CLI::App& command, GrammarInput& input,
-                         bool with_roll) {
-  command.add_option("FILE", input.file, "the .ls file")
-      ->required()
-      ->check(CLI::ExistingFile);
+                         bool with_roll, bool is_file_required) {
+  auto* file = command.add_option("FILE", input.file, "the .ls file")
+                   ->check(CLI::ExistingFile);
+  if (is_file_required) file->required();
   command
       .add_option("-n,--derivation-length", input.derivation_length,
                   "derivation steps, overriding the file's n")
       ->check(CLI::Range(0, 10000));
   command.add_option("--seed", input.seed,
-                     "seed of stochastic productions, overriding the file's");
+                     "seed of stochastic productions, overriding the file's")
+      ->check(CLI::Range(0.0, 9007199254740992.0));
   command
       .add_option("--define", input.defines,
                   "NAME=VALUE: set a constant, overriding #define")
@@ -65,10 +67,14 @@ void add_grammar_options(CLI::App& command, GrammarInput& input,
 }
 
 lsys::Grammar load_grammar(const GrammarInput& input) {
-  return lsys::parse_grammar(
+  lsys::Grammar grammar = lsys::parse_grammar(
       lsys::load_source(input.file),
       lsys::ParseOptions{.defines = input.defines,
                          .extra_settings = print_setting_names()});
+  for (const std::string& warning : grammar.warnings) {
+    std::fprintf(stderr, "warning: %s\n", warning.c_str());
+  }
+  return grammar;
 }
 
 void add_print_options(CLI::App& command, PrintInput& input) {

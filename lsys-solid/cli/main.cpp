@@ -39,27 +39,12 @@ int main(int argc, char** argv) {
   app.require_subcommand(0, 1);
 
   lsolid::cli::BuildCommand build;
-  app.add_option("FILE", build.input.file,
-                 "the .ls file to build into a printable mesh")
-      ->check(CLI::ExistingFile);
+  lsolid::cli::add_grammar_options(app, build.input, true, false);
   app.add_option("-o,--output", build.output,
                  "output file: .stl (binary) or .off; default FILE.stl");
   app.add_flag("--ascii", build.ascii, "write ASCII STL");
   app.add_flag("--no-union", build.no_union,
                "write the overlapping parts without uniting them (debugging)");
-  app.add_option("-n,--derivation-length", build.input.derivation_length,
-                 "derivation steps, overriding the file's n")
-      ->check(CLI::Range(0, 10000));
-  app.add_option("--seed", build.input.seed, "seed of stochastic productions");
-  app.add_option("--define", build.input.defines,
-                 "NAME=VALUE: set a constant, overriding #define")
-      ->allow_extra_args(false);
-  app.add_option("--max-segments", build.input.max_segments,
-                 "refuse to draw more segments than this")
-      ->capture_default_str();
-  app.add_option("--roll", build.input.roll,
-                 "which way / and \\ roll: lpfg (default) or cpfg")
-      ->check(CLI::IsMember({"lpfg", "cpfg"}));
   lsolid::cli::add_print_options(app, build.print);
 
   lsolid::cli::DeriveCommand derive;

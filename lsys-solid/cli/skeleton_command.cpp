@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <glm/common.hpp>
 #include <limits>
 
@@ -77,11 +78,9 @@ void write_summary(const lsys::Skeleton& skeleton, const char* units,
   std::string& text = out.text();
   text += fmt::format("segments: {}\npolygons: {}\n", skeleton.segments.size(),
                       skeleton.polygons.size());
-  if (skeleton.degenerate_polygons > 0) {
-    text += fmt::format("degenerate polygons dropped: {}\n",
-                        skeleton.degenerate_polygons);
-  }
-  if (low.x <= high.x) {
+  if (low.x > high.x) {
+    text += "bounds: none (nothing is drawn)\n";
+  } else {
     text += fmt::format(
         "bounds: [{:.6g}, {:.6g}, {:.6g}] to [{:.6g}, {:.6g}, {:.6g}] {}\n",
         low.x, low.y, low.z, high.x, high.y, high.z,
@@ -91,11 +90,27 @@ void write_summary(const lsys::Skeleton& skeleton, const char* units,
 
 }  // namespace
 
+void warn_about_polygons(const lsys::Skeleton& skeleton) {
+  const auto warn = [](std::size_t n, const char* what) {
+    if (n > 0) std::fprintf(stderr, "warning: %zu %s\n", n, what);
+  };
+  warn(skeleton.unclosed_polygons, "polygons opened with '{' were never closed and are dropped");
+  warn(skeleton.unmatched_polygon_ends, "'}' without an open polygon are ignored");
+  warn(skeleton.degenerate_polygons, "polygons with fewer than 3 distinct points are dropped");
+}
+
 void run_skeleton(const SkeletonCommand& command) {
   const lsys::Grammar grammar = load_grammar(command.input);
   lsys::Skeleton skeleton =
       lsys::interpret(grammar, derivation_options(command.input),
                       interpret_options(command.input));
+  warn_about_polygons(skeleton);
+  if (skeleton.segments.empty() && skeleton.polygons.empty()) {
+    std::fputs(
+        "warning: nothing is drawn; modules without a turtle meaning draw "
+        "nothing (map them with an alias block, e.g. 'aliases: Fl=F Fr=F')\n",
+        stderr);
+  }
   const PrintInput& p = command.print;
   const bool in_mm = p.wall || p.height || p.size || p.scale;
   if (in_mm) {

@@ -35,6 +35,9 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
       lsys::interpret(grammar, options.derivation, options.interpretation);
   report.segments = skeleton.segments.size();
   report.polygons = skeleton.polygons.size();
+  report.dropped.degenerate_polygons = skeleton.degenerate_polygons;
+  report.dropped.unclosed_polygons = skeleton.unclosed_polygons;
+  report.dropped.unmatched_polygon_ends = skeleton.unmatched_polygon_ends;
   report.seconds.skeleton = clock.lap();
 
   const ScaledSkeleton scaled = scale_to_print(skeleton, options.print);

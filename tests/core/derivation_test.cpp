@@ -343,6 +343,38 @@ TEST(Derivation, RefusesBeforeDerivingWhenThePredictionIsTooLarge) {
   }
 }
 
+TEST(Derivation, PredictsDeepDecompositionWithoutExpandingIt) {
+  const Grammar g = parse("n=0\n\u03C9: A\ndecomposition:\nmaximum depth: 40\nA \u2192 AA");
+  try {
+    (void)derive(g, {.max_modules = 1000});
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.diagnostic().message,
+              "n = 0 would derive a string of 1099511627776 modules, more than "
+              "the limit of 1000 (--max-modules)");
+  }
+}
+
+TEST(Derivation, RefusesAtOnceWhenEvenTheLeastGrowthIsTooMuch) {
+  // Every alternative at least triples the F's: 3^30 > 20 million.
+  const Grammar g = parse(
+      "\u03C9: F\nn=30\nF -(0.33)\u2192 F[+F]F[-F]F\nF -(0.33)\u2192 F[+F]F\n"
+      "F -(0.34)\u2192 F[-F]F\n");
+  try {
+    Derivation d(g);
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.diagnostic().message,
+              "n = 30 would draw at least 205891132094649 segments, more than "
+              "the limit of 20000000 (--max-segments)");
+  }
+  const Grammar context = parse("\u03C9: BA\nB < A \u2192 AA\nA \u2192 AA\n");
+  EXPECT_THROW(Derivation(context, {.derivation_length = 100}), ParseError);
+  // A condition may stop growth, so nothing is refused early here.
+  const Grammar conditional = parse("\u03C9: A(1)\nA(x) : x < 3 \u2192 A(x+1)A(x+1)\n");
+  EXPECT_NO_THROW(Derivation(conditional, {.derivation_length = 100}));
+}
+
 TEST(Derivation, CountsAsItGoesWhenSizesAreUnpredictable) {
   const Grammar g = parse("\u03C9: A(0)\nn=30\nA(x) : x >= 0 \u2192 A(x)FA(x)");
   try {

@@ -273,6 +273,19 @@ TEST(Interpretation, AppliesTheHomomorphismUpToTheMaximumDepth) {
   EXPECT_EQ(deeper.segments[2].p1, glm::dvec3(0, 0, 5));
 }
 
+TEST(Interpretation, RefusesAHomomorphismThatExplodes) {
+  const Grammar g = parse(
+      "n=0\n\u03C9: A\nhomomorphism:\nmaximum depth: 1000\nA \u2192 AA\n");
+  EXPECT_THROW((void)interpret(g), ParseError);
+}
+
+TEST(Interpretation, CountsUnclosedAndUnmatchedPolygons) {
+  const Skeleton s = walk("\u03C9: }{f+f+f\n\u03B4=90");
+  EXPECT_EQ(s.unclosed_polygons, 1U);
+  EXPECT_EQ(s.unmatched_polygon_ends, 1U);
+  EXPECT_TRUE(s.polygons.empty());
+}
+
 TEST(Interpretation, AliasesGiveModulesTurtleMeanings) {
   const Skeleton s = walk("aliases: f=F v=& >=/\nangle: 90\n\u03C9: f>vf\n");
   ASSERT_EQ(s.segments.size(), 2U);

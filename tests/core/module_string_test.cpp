@@ -28,6 +28,16 @@ TEST(ModuleString, SeparatesMultiCharacterNamesWithSpaces) {
   EXPECT_EQ(to_string(s, a), "F seg [ leaf ]++");
 }
 
+TEST(ModuleString, SeparatesModulesThatWouldReadAsALongerName) {
+  Alphabet a;
+  a.intern("ab");
+  ModuleString s;
+  s.push_back(a.intern("a"), {}, 0);
+  s.push_back(a.intern("b"), {}, 0);
+  s.push_back(a.intern("c"), {}, 0);
+  EXPECT_EQ(to_string(s, a), "a bc");
+}
+
 TEST(ModuleString, KeepsParametersPerModule) {
   Alphabet a;
   ModuleString s;

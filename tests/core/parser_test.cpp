@@ -165,6 +165,13 @@ TEST(Parser, AcceptsTheBlogsOwnSettingNames) {
   EXPECT_EQ(g.productions.size(), 1U);
 }
 
+TEST(Parser, WarnsAboutCommandLineDefinesTheFileNeverReads) {
+  const Grammar g = parse("#define a 1\n\u03C9: F(b)",
+                          ParseOptions{.defines = {"a=2", "b=3", "typo=4"}});
+  ASSERT_EQ(g.warnings.size(), 1U);
+  EXPECT_EQ(g.warnings[0], "--define typo: the file neither defines nor uses 'typo'");
+}
+
 TEST(Parser, CommandLineDefinesOverrideTheFile) {
   const Grammar g = parse("#define a 45\n#define b a*2\n\u03C9: +(b)",
                           ParseOptions{.defines = {"a=10", "extra=3"}});
@@ -190,6 +197,45 @@ TEST(Parser, ReadsEmptySuccessors) {
 TEST(Parser, ReadsIgnoreAndConsiderLists) {
   EXPECT_EQ(parse("#ignore: + -\n\u03C9: F").settings.ignore.size(), 2U);
   EXPECT_EQ(parse("consider: ABC\n\u03C9: F").settings.consider.size(), 3U);
+}
+
+TEST(Parser, IgnoresAByteOrderMarkAndReadsOldMacLineEnds) {
+  EXPECT_EQ(parse("\xEF\xBB\xBFn=2, \u03B4=90\nF").settings.derivation_length, 2);
+  EXPECT_EQ(derived("\xEF\xBB\xBF\u03C9: A\rA \u2192 FA\rn=2"), "FFA");
+}
+
+TEST(Parser, ReadsTheTypesetMinusSignAsTurnRight) {
+  const Grammar g = parse("\u03C9: F\u2212F");
+  EXPECT_EQ(g.commands[*g.alphabet.find("\u2212")], TurtleCommand::TurnRight);
+}
+
+TEST(Parser, AcceptsDegreeSignsFromPdfs) {
+  for (const char* sign : {"\u00B0", "\u00BA", "\u02DA", "\u25E6"}) {
+    EXPECT_EQ(parse(std::string("angle: 22.5") + sign + "\nF").settings.angle_deg,
+              22.5);
+  }
+}
+
+TEST(Parser, AllowsTrailingCommentsOnNumericSettings) {
+  const Grammar g = parse("n=2 // two steps\n\u03C9: F//F\n");
+  EXPECT_EQ(g.settings.derivation_length, 2);
+  EXPECT_EQ(g.axiom.size(), 4U);  // the axiom's // are rolls
+}
+
+TEST(Parser, DeclaresParameterCountsInModuleLines) {
+  EXPECT_EQ(derived("module bud(x)\n\u03C9: bud(1)\nbud(x) \u2192 bud(x+1)\nn=2"),
+            "bud(3)");
+  EXPECT_EQ(located_error("module bud(x,y)\n\u03C9: bud(1)"),
+            "2:4: wrong parameter count: 'bud' takes 2 parameters (as on line "
+            "1), here 1");
+}
+
+TEST(Parser, ReadsAStarInAContextAsAnyModule) {
+  // ABOP fig. 1.31: p9 `* < + > * → -`.
+  EXPECT_EQ(derived("ignore: F\n\u03C9: 1F+F1-1\n* < + > * \u2192 -\n"
+                    "* < - > * \u2192 +\nn=1"),
+            "1F-F1+1");
+  EXPECT_EQ(derived("\u03C9: +1\n* < + \u2192 -\nn=1"), "+1");
 }
 
 TEST(Parser, ReportsEachMistakeWithItsOwnMessage) {
@@ -259,6 +305,16 @@ TEST(Parser, ReportsEachMistakeWithItsOwnMessage) {
             "2:1: duplicate setting '\u03C9' (first set on line 1)");
   EXPECT_EQ(located_error("F\nF \u2192 G\naxiom: G"),
             "3:1: duplicate axiom (the first is on line 1)");
+  EXPECT_EQ(located_error("anlge=90, n=2\nF"), "1:1: unknown setting 'anlge'");
+  EXPECT_EQ(located_error("n=2, anlge=90\nF"), "1:6: unknown setting 'anlge'");
+  EXPECT_EQ(located_error("setp = 0.5*2\nF"), "1:1: unknown setting 'setp'");
+  EXPECT_EQ(located_error("angle: 20\nangle factor: 16\nF"),
+            "2:1: give either 'angle' or 'angle factor', not both");
+  EXPECT_EQ(located_error("radius: 1\nwidth: 1\nF"),
+            "2:1: give either 'width' or 'radius', not both");
+  EXPECT_EQ(located_error(std::string("\u03C9: B(") + std::string(300, '(') + "1" +
+                          std::string(300, ')') + ")"),
+            "1:206: expression is nested too deeply");
   EXPECT_EQ(parse_error("F \u2192 G"),
             "no axiom: give one as 'axiom: F', '\u03C9: F' or a line of "
             "modules before the productions");

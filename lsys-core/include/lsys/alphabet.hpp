@@ -37,6 +37,9 @@ class Alphabet {
   /// multi-character name that is a prefix, else one code point.
   /// @pre `!text.empty()`.
   [[nodiscard]] std::size_t match_length(std::string_view text) const;
+  /// True if some multi-character name starts with `text` (so that `text`
+  /// written out would not read back as the modules it came from).
+  [[nodiscard]] bool extends_to_longer_name(std::string_view text) const;
   /// True if the name has more than one code point.
   [[nodiscard]] bool is_multi_character(SymbolId id) const {
     return multi_[id];

@@ -20,8 +20,10 @@ struct DerivationOptions {
   std::optional<std::uint64_t> seed;
   /// Refuse when the turtle would draw more segments than this.
   std::uint64_t max_segments = 20'000'000;
-  /// Refuse when the derived string would be longer than this.
-  std::uint64_t max_modules = 1'000'000'000;
+  /// Refuse when the derived string would be longer than this, or the
+  /// turtle would read more modules after the homomorphism. A string that
+  /// must be held whole (contexts, cuts) takes about 40 bytes a module.
+  std::uint64_t max_modules = 200'000'000;
 };
 
 /// The size of the n-th string, predicted from the count matrix of the
@@ -33,6 +35,7 @@ struct SizePrediction {
   bool is_exact = false;
   double modules = 0.0;   ///< length of the derived string
   double segments = 0.0;  ///< drawing modules, after homomorphism
+  double interpreted_modules = 0.0;  ///< modules the turtle reads
 };
 
 /// Predicts the size of step n when the grammar allows it: context-free,
@@ -48,8 +51,8 @@ struct SizePrediction {
 /// Both give identical strings, stochastic ones included.
 class Derivation {
  public:
-  /// Prepares the derivation and checks the size limits where the size is
-  /// predictable.
+  /// Prepares the derivation and checks the size limits: against the exact
+  /// size where it is predictable, else against a lower bound of it.
   /// @throws ParseError (at the `n` setting, else the axiom) when the
   ///   predicted size exceeds a limit.
   Derivation(const Grammar& grammar, const DerivationOptions& options = {});

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <set>
 #include <span>
 #include <string>
 #include <vector>
@@ -20,6 +21,8 @@ namespace lsys {
 struct ExpressionScope {
   std::vector<std::string> parameters;
   const std::map<std::string, double>* constants = nullptr;
+  /// When set, receives the names of the constants the expression reads.
+  std::set<std::string>* used_constants = nullptr;
 };
 
 /// An arithmetic or logical expression compiled once into code for a small

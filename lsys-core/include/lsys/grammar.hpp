@@ -23,6 +23,9 @@ namespace lsys {
 inline constexpr SymbolId kBranchOpen = 0;   ///< `[`
 inline constexpr SymbolId kBranchClose = 1;  ///< `]`
 inline constexpr SymbolId kCut = 2;          ///< `%`
+/// `*`: in a context, any one module other than a bracket (ABOP fig. 1.31:
+/// `* < + > * → -`).
+inline constexpr SymbolId kAnyModule = 3;
 
 /// A module of a predecessor or context: a name and the number of formal
 /// parameters it binds (their slots follow in pattern order).
@@ -125,6 +128,9 @@ struct Grammar {
   std::map<std::string, double> constants;
   /// Settings accepted for a client (see ParseOptions::extra_settings).
   std::vector<ExtraSetting> extra_settings;
+  /// Things that are legal but probably mistakes (a `--define` the file
+  /// never reads), for the caller to show.
+  std::vector<std::string> warnings;
 };
 
 }  // namespace lsys

@@ -39,6 +39,9 @@ struct Skeleton {
   std::vector<Polygon> polygons;
   /// Polygons dropped because fewer than 3 distinct points remained.
   std::size_t degenerate_polygons = 0;
+  /// `{` never closed by `}` (dropped), and `}` without an open `{`.
+  std::size_t unclosed_polygons = 0;
+  std::size_t unmatched_polygon_ends = 0;
 };
 
 }  // namespace lsys

@@ -43,6 +43,7 @@ struct SolidReport {
   std::size_t joints = 0;
   std::size_t plates = 0;
   std::size_t skipped_polygons = 0;
+  lsys::Skeleton dropped;  ///< only the counts of what the turtle dropped
   double mm_per_unit = 1.0;
   UnionStats union_stats;
   RoundingStats rounding;

@@ -371,9 +371,9 @@ class Compiler {
   }
 
   bool is_operator_code_point() const {
-    for (std::string_view op : {"\u2264", "\u2265", "\u2260", "\u2212",
-                                "\u00D7", "\u00B7", "\u00B0", "\u00BA",
-                                "\u02DA", "\u25E6"}) {
+    for (std::string_view op :
+         {"\u2264", "\u2265", "\u2260", "\u2212", "\u00D7", "\u00B7", "\u00B0",
+          "\u00BA", "\u02DA", "\u25E6"}) {
       if (text_.substr(pos_).starts_with(op)) return true;
     }
     return false;
@@ -438,7 +438,8 @@ class Compiler {
           it != scope_.constants->end()) {
         const int node = add(Op::Constant, at);
         nodes_.back().instruction.value = it->second;
-        if (scope_.used_constants != nullptr) scope_.used_constants->insert(name);
+        if (scope_.used_constants != nullptr)
+          scope_.used_constants->insert(name);
         return node;
       }
     }

@@ -8,8 +8,8 @@
 
 #include <algorithm>
 #include <functional>
-#include <limits>
 #include <glm/geometric.hpp>
+#include <limits>
 
 #include "lsys/turtle.hpp"
 #include "rule_index.hpp"
@@ -277,18 +277,21 @@ Skeleton interpret(const Grammar& grammar, const DerivationOptions& derivation,
   const int n = d.derivation_length();
   const std::string limit =
       " modules after the homomorphism, more than the limit of " +
-      count_text(static_cast<double>(derivation.max_modules)) + " (--max-modules)";
+      count_text(static_cast<double>(derivation.max_modules)) +
+      " (--max-modules)";
   if (d.prediction() && d.prediction()->interpreted_modules >
                             static_cast<double>(derivation.max_modules)) {
     throw limit_error(grammar, derivation, n,
                       "would make the turtle read " +
-                          count_text(d.prediction()->interpreted_modules) + limit);
+                          count_text(d.prediction()->interpreted_modules) +
+                          limit);
   }
   interpreter.limit_modules(derivation.max_modules, [&] {
-    throw limit_error(grammar, derivation, n,
-                      "makes the turtle read more than " +
-                          count_text(static_cast<double>(derivation.max_modules)) +
-                          " modules after the homomorphism (--max-modules)");
+    throw limit_error(
+        grammar, derivation, n,
+        "makes the turtle read more than " +
+            count_text(static_cast<double>(derivation.max_modules)) +
+            " modules after the homomorphism (--max-modules)");
   });
   if (d.prediction()) {
     interpreter.reserve(static_cast<std::size_t>(

@@ -184,7 +184,8 @@ class Parser {
 
   Grammar run() {
     grammar_.source = source_;
-    for (const char* name : {"[", "]", "%", "*"}) grammar_.alphabet.intern(name);
+    for (const char* name : {"[", "]", "%", "*"})
+      grammar_.alphabet.intern(name);
     // Multi-character turtle modules must be known to the tokeniser.
     for (const char* name : {"@v", "@Tp", "@Ts"})
       grammar_.alphabet.intern(name);
@@ -404,7 +405,8 @@ class Parser {
     std::size_t i = r.begin;
     while (i < r.end && (is_word_char(text_[i]) || text_[i] == ' ')) ++i;
     if (i == r.begin || i >= r.end) return false;
-    if (std::isdigit(static_cast<unsigned char>(text_[r.begin])) != 0) return false;
+    if (std::isdigit(static_cast<unsigned char>(text_[r.begin])) != 0)
+      return false;
     return (text_[i] == ':' && text_.substr(i, 3) != "::=") ||
            (text_[i] == '=' && text_.substr(i, 2) != "==");
   }
@@ -428,9 +430,12 @@ class Parser {
       const auto match = match_key(piece);
       if (!match) {
         std::size_t end = piece.begin;
-        while (end < piece.end && (is_word_char(text_[end]) || text_[end] == ' ')) ++end;
+        while (end < piece.end &&
+               (is_word_char(text_[end]) || text_[end] == ' '))
+          ++end;
         fail(piece.begin, "unknown setting '" +
-                              std::string(view(trim(Range{piece.begin, end}))) + "'");
+                              std::string(view(trim(Range{piece.begin, end}))) +
+                              "'");
       }
       Range value{match->value_begin, piece.end};
       // `n=2 // two`: numbers never contain `//`; modules (the axiom, lists)
@@ -476,16 +481,13 @@ class Parser {
   // and a degree sign (`90`, `0.5*2`, `22.5°`), not modules.
   bool is_value_text(Range r) const {
     const std::string_view v = view(trim(r));
-    return !v.empty() &&
-           std::all_of(v.begin(), v.end(),
-                       [](char c) {
-                         return std::isdigit(static_cast<unsigned char>(c)) != 0 ||
-                                std::string_view(".-+*/^() eE\xC2\xB0").find(c) !=
-                                    std::string_view::npos;
-                       }) &&
-           std::any_of(v.begin(), v.end(), [](char c) {
-             return std::isdigit(static_cast<unsigned char>(c)) != 0;
-           });
+    return !v.empty() && std::all_of(v.begin(), v.end(), [](char c) {
+      return std::isdigit(static_cast<unsigned char>(c)) != 0 ||
+             std::string_view(".-+*/^() eE\xC2\xB0").find(c) !=
+                 std::string_view::npos;
+    }) && std::any_of(v.begin(), v.end(), [](char c) {
+      return std::isdigit(static_cast<unsigned char>(c)) != 0;
+    });
   }
 
   // `anlge=90, n=2`: a line of `name = value` pieces where a piece names a
@@ -827,7 +829,8 @@ class Parser {
       }
       const Expression value =
           parse_expression(source, equals + 1, define.size(),
-                           ExpressionScope{.constants = &grammar_.constants, .used_constants = &used_constants_});
+                           ExpressionScope{.constants = &grammar_.constants,
+                                           .used_constants = &used_constants_});
       grammar_.constants[name] = value.constant_value();
       given.insert(name);
       given_defines_.push_back(name);
@@ -849,7 +852,8 @@ class Parser {
 
   double constant(Range r) const {
     return parse_expression(source_, r.begin, r.end,
-                            ExpressionScope{.constants = &grammar_.constants, .used_constants = &used_constants_})
+                            ExpressionScope{.constants = &grammar_.constants,
+                                            .used_constants = &used_constants_})
         .constant_value();
   }
 
@@ -1047,7 +1051,8 @@ class Parser {
         fail(raw.offset, bracket_error);
       }
       if (raw.symbol == kAnyModule && !raw.arguments.empty()) {
-        fail(raw.offset, "'*' in a context matches any module and takes no parameters");
+        fail(raw.offset,
+             "'*' in a context matches any module and takes no parameters");
       }
       if (raw.symbol != kAnyModule) {
         check_arity(raw.symbol, static_cast<int>(raw.arguments.size()),
@@ -1310,7 +1315,8 @@ class Parser {
       };
       both(Key::Angle, Key::AngleFactor,
            "give either 'angle' or 'angle factor', not both");
-      both(Key::Width, Key::Radius, "give either 'width' or 'radius', not both");
+      both(Key::Width, Key::Radius,
+           "give either 'width' or 'radius', not both");
       both(Key::WidthPerGeneration, Key::RadiusPerGeneration,
            "give either 'width decrement per generation' or 'radius "
            "reduction per generation', not both");

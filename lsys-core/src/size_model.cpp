@@ -92,7 +92,8 @@ class CountMatrix {
     }
     SizePrediction p{.is_exact = !is_lower_bound_};
     for (std::size_t k = 0; k < v.size(); ++k) {
-      const InterpretationCost c = costs_.cost(kinds_[k].first, kinds_[k].second);
+      const InterpretationCost c =
+          costs_.cost(kinds_[k].first, kinds_[k].second);
       p.modules = std::min(kHugeCount, p.modules + v[k]);
       p.segments = std::min(kHugeCount, p.segments + v[k] * c.segments);
       p.interpreted_modules =
@@ -150,8 +151,9 @@ class CountMatrix {
     if (const auto it = decomposed_.find(key); it != decomposed_.end()) {
       return it->second;
     }
-    Counts out = rewrite(decompositions_, k,
-                         [&](std::size_t child) { return decomposed(child, depth + 1); });
+    Counts out = rewrite(decompositions_, k, [&](std::size_t child) {
+      return decomposed(child, depth + 1);
+    });
     decomposed_.emplace(key, out);
     return out;
   }
@@ -218,7 +220,8 @@ InterpretationCost InterpretationCosts::cost(SymbolId symbol, int arity,
     const auto pick = [&](double a, double b) {
       return is_lower_bound_ ? std::min(a, b) : std::max(a, b);
     };
-    out = {pick(out.segments, itself.segments), pick(out.modules, itself.modules)};
+    out = {pick(out.segments, itself.segments),
+           pick(out.modules, itself.modules)};
   }
   memo_[key] = out;
   return out;
@@ -227,7 +230,8 @@ InterpretationCost InterpretationCosts::cost(SymbolId symbol, int arity,
 double InterpretationCosts::segments_any_arity(SymbolId symbol) {
   double best = cost(symbol, 0).segments;
   for (const Production* rule : homomorphisms_.rules_for(symbol)) {
-    best = std::max(best, cost(symbol, rule->predecessor.parameter_count).segments);
+    best = std::max(best,
+                    cost(symbol, rule->predecessor.parameter_count).segments);
   }
   return best;
 }
@@ -257,7 +261,8 @@ ParseError limit_error(const Grammar& grammar, const DerivationOptions& options,
   if (!options.derivation_length && grammar.settings.derivation_length_offset) {
     offset = *grammar.settings.derivation_length_offset;
   }
-  return error_at(*grammar.source, offset, "n = " + std::to_string(n) + " " + what);
+  return error_at(*grammar.source, offset,
+                  "n = " + std::to_string(n) + " " + what);
 }
 
 }  // namespace lsys

@@ -9,23 +9,36 @@ namespace lsys {
 namespace {
 
 // ABOP p. 209 and the cpfg manual for the single characters; `∧` and `−`
-// (U+2212) are how seed 000 and typeset ABOP print `^` and `-`; `@v`, `@Tp`, `@Ts` are L-Py's and
-// cpfg's spellings.
+// (U+2212) are how seed 000 and typeset ABOP print `^` and `-`; `@v`, `@Tp`,
+// `@Ts` are L-Py's and cpfg's spellings.
 constexpr std::array<std::pair<std::string_view, TurtleCommand>, 28> kNames{{
-    {"F", TurtleCommand::Draw},           {"f", TurtleCommand::Move},
-    {"G", TurtleCommand::DrawNoVertex},   {"g", TurtleCommand::MoveNoVertex},
-    {"+", TurtleCommand::TurnLeft},       {"-", TurtleCommand::TurnRight},
+    {"F", TurtleCommand::Draw},
+    {"f", TurtleCommand::Move},
+    {"G", TurtleCommand::DrawNoVertex},
+    {"g", TurtleCommand::MoveNoVertex},
+    {"+", TurtleCommand::TurnLeft},
+    {"-", TurtleCommand::TurnRight},
     {"\u2212", TurtleCommand::TurnRight},
-    {"&", TurtleCommand::PitchDown},      {"^", TurtleCommand::PitchUp},
-    {"\u2227", TurtleCommand::PitchUp},   {"/", TurtleCommand::RollRight},
-    {"\\", TurtleCommand::RollLeft},      {"|", TurtleCommand::TurnAround},
-    {"$", TurtleCommand::RollToVertical}, {"@v", TurtleCommand::RollToVertical},
-    {"[", TurtleCommand::Push},           {"]", TurtleCommand::Pop},
-    {"{", TurtleCommand::PolygonBegin},   {".", TurtleCommand::PolygonVertex},
-    {"}", TurtleCommand::PolygonEnd},     {"!", TurtleCommand::Width},
-    {"'", TurtleCommand::ColorNext},      {";", TurtleCommand::ColorNext},
-    {",", TurtleCommand::ColorPrevious},  {"%", TurtleCommand::Cut},
-    {"@Tp", TurtleCommand::SetTropism},   {"@Ts", TurtleCommand::SetElasticity},
+    {"&", TurtleCommand::PitchDown},
+    {"^", TurtleCommand::PitchUp},
+    {"\u2227", TurtleCommand::PitchUp},
+    {"/", TurtleCommand::RollRight},
+    {"\\", TurtleCommand::RollLeft},
+    {"|", TurtleCommand::TurnAround},
+    {"$", TurtleCommand::RollToVertical},
+    {"@v", TurtleCommand::RollToVertical},
+    {"[", TurtleCommand::Push},
+    {"]", TurtleCommand::Pop},
+    {"{", TurtleCommand::PolygonBegin},
+    {".", TurtleCommand::PolygonVertex},
+    {"}", TurtleCommand::PolygonEnd},
+    {"!", TurtleCommand::Width},
+    {"'", TurtleCommand::ColorNext},
+    {";", TurtleCommand::ColorNext},
+    {",", TurtleCommand::ColorPrevious},
+    {"%", TurtleCommand::Cut},
+    {"@Tp", TurtleCommand::SetTropism},
+    {"@Ts", TurtleCommand::SetElasticity},
     {"\u2019", TurtleCommand::ColorNext},
 }};
 

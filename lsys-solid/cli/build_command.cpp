@@ -23,9 +23,11 @@ void print_report(const SolidReport& r, bool united) {
     fmt::print("skipped: {} polygons without area\n", r.skipped_polygons);
   }
   if (united) {
-    fmt::print("union: {} booleans, {} joined without a boolean, {} retried\n",
-               r.union_stats.booleans, r.union_stats.concatenations,
-               r.union_stats.retries);
+    fmt::print(
+        "union: {} booleans, {} joined without a boolean, {} retried, {} "
+        "cavities filled\n",
+        r.union_stats.booleans, r.union_stats.concatenations,
+        r.union_stats.retries, r.cavities_filled);
   }
   fmt::print("triangles: {}\n", v.triangles);
   fmt::print("volume: {:.1f} mm³\n", v.volume_mm3);

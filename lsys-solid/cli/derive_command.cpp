@@ -34,8 +34,8 @@ void append_json_string(std::string& out, const std::string& text) {
 
 }  // namespace
 
-void add_grammar_options(CLI::App& command, GrammarInput& input,
-                         bool with_roll, bool is_file_required) {
+void add_grammar_options(CLI::App& command, GrammarInput& input, bool with_roll,
+                         bool is_file_required) {
   auto* file = command.add_option("FILE", input.file, "the .ls file")
                    ->check(CLI::ExistingFile);
   if (is_file_required) file->required();
@@ -43,8 +43,9 @@ void add_grammar_options(CLI::App& command, GrammarInput& input,
       .add_option("-n,--derivation-length", input.derivation_length,
                   "derivation steps, overriding the file's n")
       ->check(CLI::Range(0, 10000));
-  command.add_option("--seed", input.seed,
-                     "seed of stochastic productions, overriding the file's")
+  command
+      .add_option("--seed", input.seed,
+                  "seed of stochastic productions, overriding the file's")
       ->check(CLI::Range(0.0, 9007199254740992.0));
   command
       .add_option("--define", input.defines,

@@ -94,9 +94,12 @@ void warn_about_polygons(const lsys::Skeleton& skeleton) {
   const auto warn = [](std::size_t n, const char* what) {
     if (n > 0) std::fprintf(stderr, "warning: %zu %s\n", n, what);
   };
-  warn(skeleton.unclosed_polygons, "polygons opened with '{' were never closed and are dropped");
-  warn(skeleton.unmatched_polygon_ends, "'}' without an open polygon are ignored");
-  warn(skeleton.degenerate_polygons, "polygons with fewer than 3 distinct points are dropped");
+  warn(skeleton.unclosed_polygons,
+       "polygons opened with '{' were never closed and are dropped");
+  warn(skeleton.unmatched_polygon_ends,
+       "'}' without an open polygon are ignored");
+  warn(skeleton.degenerate_polygons,
+       "polygons with fewer than 3 distinct points are dropped");
 }
 
 void run_skeleton(const SkeletonCommand& command) {

@@ -42,6 +42,65 @@ void append(TriangleMesh& mesh, const TriangleMesh& part) {
   }
 }
 
+void remove_unused_vertices(TriangleMesh& mesh) {
+  constexpr std::uint32_t kUnused = 0xFFFFFFFFU;
+  std::vector<std::uint32_t> remap(mesh.vertices.size(), kUnused);
+  std::vector<glm::dvec3> kept;
+  for (auto& t : mesh.triangles) {
+    for (std::uint32_t& v : t) {
+      if (remap[v] == kUnused) {
+        remap[v] = static_cast<std::uint32_t>(kept.size());
+        kept.push_back(mesh.vertices[v]);
+      }
+      v = remap[v];
+    }
+  }
+  mesh.vertices = std::move(kept);
+}
+
+std::size_t remove_cavities(TriangleMesh& mesh) {
+  // Shells: triangles joined through shared edges.
+  const std::size_t n = mesh.triangles.size();
+  std::vector<std::uint32_t> parent(n);
+  for (std::uint32_t i = 0; i < n; ++i) parent[i] = i;
+  const auto find = [&](std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  std::unordered_map<std::uint64_t, std::uint32_t> first_face;
+  for (std::uint32_t f = 0; f < n; ++f) {
+    const auto& t = mesh.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = t[static_cast<std::size_t>(k)];
+      const std::uint32_t b = t[static_cast<std::size_t>((k + 1) % 3)];
+      const std::uint64_t key =
+          (static_cast<std::uint64_t>(std::min(a, b)) << 32U) | std::max(a, b);
+      const auto [it, inserted] = first_face.emplace(key, f);
+      if (!inserted) parent[find(f)] = find(it->second);
+    }
+  }
+  std::unordered_map<std::uint32_t, double> six_volume;
+  for (std::uint32_t f = 0; f < n; ++f) {
+    const auto& t = mesh.triangles[f];
+    six_volume[find(f)] +=
+        glm::dot(mesh.vertices[t[0]],
+                 glm::cross(mesh.vertices[t[1]], mesh.vertices[t[2]]));
+  }
+  std::size_t removed = 0;
+  for (const auto& [root, volume] : six_volume) {
+    if (volume < 0.0) ++removed;
+  }
+  if (removed == 0) return 0;
+  std::vector<std::array<std::uint32_t, 3>> kept;
+  kept.reserve(n);
+  for (std::uint32_t f = 0; f < n; ++f) {
+    if (six_volume[find(f)] >= 0.0) kept.push_back(mesh.triangles[f]);
+  }
+  mesh.triangles = std::move(kept);
+  remove_unused_vertices(mesh);
+  return removed;
+}
+
 TriangleMesh round_to_float(const TriangleMesh& mesh) {
   TriangleMesh out;
   std::unordered_map<FloatKey, std::uint32_t, FloatKeyHash> index;

@@ -137,12 +137,17 @@ TriangleMesh read_off(const std::string& data,
   return mesh;
 }
 
+// The facet normal as float-based readers recompute it from the stored
+// float corners (edge vectors in float, as admesh's stl_calculate_normal), so
+// that a checker comparing the two finds nothing to fix even on thin facets.
 glm::vec3 facet_normal(const TriangleMesh& mesh,
                        const std::array<std::uint32_t, 3>& t) {
-  const glm::dvec3 n = glm::cross(mesh.vertices[t[1]] - mesh.vertices[t[0]],
-                                  mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+  const glm::vec3 a(mesh.vertices[t[0]]);
+  const glm::vec3 e1 = glm::vec3(mesh.vertices[t[1]]) - a;
+  const glm::vec3 e2 = glm::vec3(mesh.vertices[t[2]]) - a;
+  const glm::dvec3 n = glm::cross(glm::dvec3(e1), glm::dvec3(e2));
   const double length = glm::length(n);
-  return length > 0.0 ? glm::vec3(n / length) : glm::vec3(0.0F);
+  return length > 1e-12 ? glm::vec3(n / length) : glm::vec3(0.0F);
 }
 
 std::string encode(const TriangleMesh& mesh, MeshFormat format) {

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <glm/common.hpp>
+#include <glm/exponential.hpp>
+#include <glm/geometric.hpp>
 
 #include "lsolid/errors.hpp"
 #include "lsolid/mesh.hpp"
@@ -15,16 +17,22 @@ namespace {
 // around the segments, plates of wall thickness around the polygons.
 Box model_box(const lsys::Skeleton& s, double scale, double wall_mm) {
   Box box;
-  const auto grow = [&](const glm::dvec3& p, double radius) {
-    box.min = glm::min(box.min, p * scale - radius);
-    box.max = glm::max(box.max, p * scale + radius);
+  const auto grow = [&](const glm::dvec3& p, const glm::dvec3& pad) {
+    box.min = glm::min(box.min, p * scale - pad);
+    box.max = glm::max(box.max, p * scale + pad);
   };
   for (const lsys::Segment& seg : s.segments) {
-    grow(seg.p0, std::max(seg.start_diameter * scale, wall_mm) / 2.0);
-    grow(seg.p1, std::max(seg.end_diameter * scale, wall_mm) / 2.0);
+    // A disc of radius r across direction d reaches r·sqrt(1 - d_i²) along
+    // axis i: a tube's flat end adds nothing along its own axis.
+    const glm::dvec3 d = glm::normalize(seg.p1 - seg.p0);
+    const glm::dvec3 across = glm::sqrt(glm::max(glm::dvec3(0.0), 1.0 - d * d));
+    grow(seg.p0,
+         across * (std::max(seg.start_diameter * scale, wall_mm) / 2.0));
+    grow(seg.p1, across * (std::max(seg.end_diameter * scale, wall_mm) / 2.0));
   }
   for (const lsys::Polygon& polygon : s.polygons) {
-    for (const glm::dvec3& p : polygon.points) grow(p, wall_mm / 2.0);
+    for (const glm::dvec3& p : polygon.points)
+      grow(p, glm::dvec3(wall_mm / 2.0));
   }
   return box;
 }

@@ -55,6 +55,7 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
     UnionResult united = union_parts(std::move(parts.parts));
     solid.mesh = std::move(united.mesh);
     report.union_stats = united.stats;
+    report.cavities_filled = remove_cavities(solid.mesh);
   } else {
     for (const Part& part : parts.parts) append(solid.mesh, part.mesh);
   }

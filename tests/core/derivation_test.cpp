@@ -344,7 +344,8 @@ TEST(Derivation, RefusesBeforeDerivingWhenThePredictionIsTooLarge) {
 }
 
 TEST(Derivation, PredictsDeepDecompositionWithoutExpandingIt) {
-  const Grammar g = parse("n=0\n\u03C9: A\ndecomposition:\nmaximum depth: 40\nA \u2192 AA");
+  const Grammar g =
+      parse("n=0\n\u03C9: A\ndecomposition:\nmaximum depth: 40\nA \u2192 AA");
   try {
     (void)derive(g, {.max_modules = 1000});
     FAIL() << "no error";
@@ -371,7 +372,8 @@ TEST(Derivation, RefusesAtOnceWhenEvenTheLeastGrowthIsTooMuch) {
   const Grammar context = parse("\u03C9: BA\nB < A \u2192 AA\nA \u2192 AA\n");
   EXPECT_THROW(Derivation(context, {.derivation_length = 100}), ParseError);
   // A condition may stop growth, so nothing is refused early here.
-  const Grammar conditional = parse("\u03C9: A(1)\nA(x) : x < 3 \u2192 A(x+1)A(x+1)\n");
+  const Grammar conditional =
+      parse("\u03C9: A(1)\nA(x) : x < 3 \u2192 A(x+1)A(x+1)\n");
   EXPECT_NO_THROW(Derivation(conditional, {.derivation_length = 100}));
 }
 

@@ -169,7 +169,8 @@ TEST(Parser, WarnsAboutCommandLineDefinesTheFileNeverReads) {
   const Grammar g = parse("#define a 1\n\u03C9: F(b)",
                           ParseOptions{.defines = {"a=2", "b=3", "typo=4"}});
   ASSERT_EQ(g.warnings.size(), 1U);
-  EXPECT_EQ(g.warnings[0], "--define typo: the file neither defines nor uses 'typo'");
+  EXPECT_EQ(g.warnings[0],
+            "--define typo: the file neither defines nor uses 'typo'");
 }
 
 TEST(Parser, CommandLineDefinesOverrideTheFile) {
@@ -200,7 +201,8 @@ TEST(Parser, ReadsIgnoreAndConsiderLists) {
 }
 
 TEST(Parser, IgnoresAByteOrderMarkAndReadsOldMacLineEnds) {
-  EXPECT_EQ(parse("\xEF\xBB\xBFn=2, \u03B4=90\nF").settings.derivation_length, 2);
+  EXPECT_EQ(parse("\xEF\xBB\xBFn=2, \u03B4=90\nF").settings.derivation_length,
+            2);
   EXPECT_EQ(derived("\xEF\xBB\xBF\u03C9: A\rA \u2192 FA\rn=2"), "FFA");
 }
 
@@ -211,8 +213,9 @@ TEST(Parser, ReadsTheTypesetMinusSignAsTurnRight) {
 
 TEST(Parser, AcceptsDegreeSignsFromPdfs) {
   for (const char* sign : {"\u00B0", "\u00BA", "\u02DA", "\u25E6"}) {
-    EXPECT_EQ(parse(std::string("angle: 22.5") + sign + "\nF").settings.angle_deg,
-              22.5);
+    EXPECT_EQ(
+        parse(std::string("angle: 22.5") + sign + "\nF").settings.angle_deg,
+        22.5);
   }
 }
 
@@ -223,8 +226,9 @@ TEST(Parser, AllowsTrailingCommentsOnNumericSettings) {
 }
 
 TEST(Parser, DeclaresParameterCountsInModuleLines) {
-  EXPECT_EQ(derived("module bud(x)\n\u03C9: bud(1)\nbud(x) \u2192 bud(x+1)\nn=2"),
-            "bud(3)");
+  EXPECT_EQ(
+      derived("module bud(x)\n\u03C9: bud(1)\nbud(x) \u2192 bud(x+1)\nn=2"),
+      "bud(3)");
   EXPECT_EQ(located_error("module bud(x,y)\n\u03C9: bud(1)"),
             "2:4: wrong parameter count: 'bud' takes 2 parameters (as on line "
             "1), here 1");
@@ -312,8 +316,8 @@ TEST(Parser, ReportsEachMistakeWithItsOwnMessage) {
             "2:1: give either 'angle' or 'angle factor', not both");
   EXPECT_EQ(located_error("radius: 1\nwidth: 1\nF"),
             "2:1: give either 'width' or 'radius', not both");
-  EXPECT_EQ(located_error(std::string("\u03C9: B(") + std::string(300, '(') + "1" +
-                          std::string(300, ')') + ")"),
+  EXPECT_EQ(located_error(std::string("\u03C9: B(") + std::string(300, '(') +
+                          "1" + std::string(300, ')') + ")"),
             "1:206: expression is nested too deeply");
   EXPECT_EQ(parse_error("F \u2192 G"),
             "no axiom: give one as 'axiom: F', '\u03C9: F' or a line of "

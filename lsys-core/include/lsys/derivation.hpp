@@ -33,8 +33,8 @@ struct SizePrediction {
   /// False when conditions, probabilities, contexts or cuts make sizes
   /// depend on values; the counts are then upper bounds, or absent.
   bool is_exact = false;
-  double modules = 0.0;   ///< length of the derived string
-  double segments = 0.0;  ///< drawing modules, after homomorphism
+  double modules = 0.0;              ///< length of the derived string
+  double segments = 0.0;             ///< drawing modules, after homomorphism
   double interpreted_modules = 0.0;  ///< modules the turtle reads
 };
 

@@ -81,5 +81,4 @@ class Turtle {
   int rotations_since_orthonormalize_ = 0;
 };
 
-
 }  // namespace lsys

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <vector>
@@ -34,6 +35,15 @@ struct Box {
 
 /// Appends `part` to `mesh` (a disjoint union of surfaces, no boolean).
 void append(TriangleMesh& mesh, const TriangleMesh& part);
+
+/// Drops the vertices no triangle uses, renumbering the rest in order.
+void remove_unused_vertices(TriangleMesh& mesh);
+
+/// Removes the shells that enclose negative volume: sealed cavities that a
+/// union leaves where parts surround empty space. Filling them changes no
+/// outer surface. Returns how many were removed.
+/// @pre the mesh is closed and consistently oriented.
+std::size_t remove_cavities(TriangleMesh& mesh);
 
 /// The mesh with every coordinate rounded to the nearest float, as STL
 /// stores it, and vertices that become equal merged.

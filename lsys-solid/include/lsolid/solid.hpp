@@ -46,6 +46,7 @@ struct SolidReport {
   lsys::Skeleton dropped;  ///< only the counts of what the turtle dropped
   double mm_per_unit = 1.0;
   UnionStats union_stats;
+  std::size_t cavities_filled = 0;  ///< sealed voids the union left
   RoundingStats rounding;
   ValidationReport validation;  ///< of `Solid::mesh`, exactly as returned
   StageSeconds seconds;

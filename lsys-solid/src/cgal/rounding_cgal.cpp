@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "lsolid/rounding.hpp"
+#include "vertex_key.hpp"
 
 namespace lsolid {
 namespace {
@@ -65,8 +66,7 @@ TriangleMesh from_mesh(const Mesh& mesh) {
 void snap_to_float(Mesh& mesh) {
   for (const auto v : mesh.vertices()) {
     const Point& p = mesh.point(v);
-    mesh.point(v) = Point(static_cast<float>(p.x()), static_cast<float>(p.y()),
-                          static_cast<float>(p.z()));
+    mesh.point(v) = Point(to_float(p.x()), to_float(p.y()), to_float(p.z()));
   }
 }
 
@@ -86,6 +86,9 @@ TriangleMesh round_and_repair(const TriangleMesh& input, bool float_coordinates,
         faces(mesh), mesh, kCapCosine, 1.0, kShortEdgeMm,
         CGAL::parameters::flip_triangle_height_threshold(kShortEdgeMm));
     mesh.collect_garbage();
+    // Collapses may move vertices off the float grid: round again, and
+    // judge the result only as it will be written.
+    if (float_coordinates) snap_to_float(mesh);
     stats.slivers_removed += before - std::min(before, count_faces(mesh));
 
     std::vector<std::pair<Face, Face>> pairs;
@@ -110,6 +113,7 @@ TriangleMesh round_and_repair(const TriangleMesh& input, bool float_coordinates,
       mesh.collect_garbage();
     }
   }
+  if (float_coordinates) snap_to_float(mesh);  // what is checked is written
   return from_mesh(mesh);
 }
 

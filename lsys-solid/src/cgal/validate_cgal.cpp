@@ -3,6 +3,11 @@
 //
 // Exact geometric checks with CGAL 5.5 and its filtered exact predicates
 // (EPICK): coordinates are doubles, and every predicate is decided exactly.
+// CGAL's preconditions stay on, as exceptions, in release builds too (see
+// boolean_cgal.cpp): a check must report, not crash.
+#undef NDEBUG
+#define CGAL_NO_ASSERTIONS
+#define CGAL_NO_POSTCONDITIONS
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
@@ -43,9 +48,11 @@ struct CountingIterator {
 
 }  // namespace
 
-ExactChecks exact_checks(const TriangleMesh& mesh, bool is_edge_manifold,
+ExactChecks exact_checks(const TriangleMesh& input, bool is_edge_manifold,
                          bool is_closed_manifold) {
   ExactChecks r;
+  TriangleMesh mesh = input;
+  remove_unused_vertices(mesh);  // a halfedge mesh has no isolated points
   std::vector<Point> points;
   points.reserve(mesh.vertices.size());
   for (const glm::dvec3& p : mesh.vertices) points.emplace_back(p.x, p.y, p.z);
@@ -65,14 +72,23 @@ ExactChecks exact_checks(const TriangleMesh& mesh, bool is_edge_manifold,
   if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
     PMP::orient_polygon_soup(points, polygons);
   }
-  Mesh sm;
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, sm);
-  PMP::self_intersections(sm, CountingIterator{&r.self_intersecting_pairs});
-  r.self_intersections_checked = true;
-  if (is_closed_manifold && r.degenerate_faces == 0 &&
-      r.self_intersecting_pairs == 0) {
-    r.orientation_checked = true;
-    r.is_outward = PMP::does_bound_a_volume(sm);
+  try {
+    Mesh sm;
+    PMP::polygon_soup_to_polygon_mesh(points, polygons, sm);
+    PMP::self_intersections(sm, CountingIterator{&r.self_intersecting_pairs});
+    r.self_intersections_checked = true;
+    if (is_closed_manifold && r.degenerate_faces == 0 &&
+        r.self_intersecting_pairs == 0) {
+      // does_bound_a_volume checks that nested shells alternate in
+      // orientation; is_outward_oriented that the outermost shell (the one
+      // with the highest vertex) faces out.
+      r.is_outward =
+          PMP::does_bound_a_volume(sm) && PMP::is_outward_oriented(sm);
+      r.orientation_checked = true;
+    }
+  } catch (const std::exception&) {
+    // A precondition CGAL found unmet: the checks not done stay unchecked,
+    // which makes the mesh not printable.
   }
   return r;
 }

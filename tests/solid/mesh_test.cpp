@@ -1,0 +1,40 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#include "lsolid/mesh.hpp"
+
+#include <gtest/gtest.h>
+
+#include "support/mesh_checks.hpp"
+
+namespace lsolid {
+namespace {
+
+using testing::box_mesh;
+
+TEST(Mesh, MeasuresBoundsAndVolume) {
+  const TriangleMesh box = box_mesh({0, 0, 0}, {1, 2, 3});
+  EXPECT_DOUBLE_EQ(signed_volume(box), 6.0);
+  EXPECT_EQ(bounds(box).max, glm::dvec3(1, 2, 3));
+  EXPECT_TRUE(Box{}.empty());
+}
+
+TEST(Mesh, AppendsWithoutABoolean) {
+  TriangleMesh both = box_mesh({0, 0, 0}, {1, 1, 1});
+  append(both, box_mesh({5, 0, 0}, {6, 1, 1}));
+  EXPECT_EQ(both.vertices.size(), 16U);
+  EXPECT_EQ(both.triangles.size(), 24U);
+  EXPECT_DOUBLE_EQ(signed_volume(both), 2.0);
+}
+
+TEST(Mesh, RoundsToFloatsAndMergesVerticesThatMeet) {
+  TriangleMesh m;
+  m.vertices = {{0.1, 0, 0}, {0.1 + 1e-12, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  m.triangles = {{0, 2, 3}, {1, 3, 2}};
+  const TriangleMesh r = round_to_float(m);
+  EXPECT_EQ(r.vertices.size(), 3U);
+  EXPECT_EQ(r.vertices[0].x, static_cast<double>(0.1F));
+  EXPECT_EQ(r.triangles[1][0], 0U);
+}
+
+}  // namespace
+}  // namespace lsolid

@@ -1,0 +1,46 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#include "lsolid/rounding.hpp"
+
+#include <gtest/gtest.h>
+
+#include "lsolid/boolean.hpp"
+#include "support/mesh_checks.hpp"
+
+namespace lsolid {
+namespace {
+
+using testing::box_mesh;
+using testing::expect_printable;
+
+TEST(Rounding, MendsSliversThatFloatsCannotHold) {
+  // Boxes offset by 1e-7 mm: the union has faces 1e-7 apart, closer than
+  // floats near 100 mm can tell.
+  std::vector<Part> parts{
+      {box_mesh({100, 100, 100}, {101, 101, 101}), "a"},
+      {box_mesh({100.5, 100, 100 + 1e-7}, {101.5, 101, 101 + 1e-7}), "b"}};
+  const TriangleMesh united = union_parts(std::move(parts)).mesh;
+  const ValidationReport naive = validate(round_to_float(united));
+  EXPECT_FALSE(naive.is_printable());
+  RoundingStats stats;
+  const TriangleMesh repaired = round_and_repair(united, true, stats);
+  expect_printable(repaired);
+  EXPECT_GT(stats.slivers_removed, 0U);
+  for (const glm::dvec3& p : repaired.vertices) {
+    volatile float rounded = static_cast<float>(p.x);  // see vertex_key.hpp
+    EXPECT_EQ(p.x, static_cast<double>(rounded)) << std::hexfloat << p.x;
+  }
+  EXPECT_NEAR(signed_volume(repaired), 1.5, 1e-4);
+}
+
+TEST(Rounding, LeavesACleanMeshAsItIs) {
+  RoundingStats stats;
+  const TriangleMesh box =
+      round_and_repair(box_mesh({0, 0, 0}, {1, 2, 3}), true, stats);
+  EXPECT_EQ(box.triangles.size(), 12U);
+  EXPECT_EQ(stats.passes, 1);
+  EXPECT_EQ(stats.slivers_removed, 0U);
+}
+
+}  // namespace
+}  // namespace lsolid

@@ -1,0 +1,120 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#include "lsolid/solid.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include "lsolid/errors.hpp"
+#include "lsolid/mesh_io.hpp"
+#include "lsolid/parts.hpp"
+#include "lsys/diagnostic.hpp"
+#include "lsys/parser.hpp"
+#include "support/mesh_checks.hpp"
+
+namespace lsolid {
+namespace {
+
+using testing::expect_admesh_agrees;
+using testing::expect_printable;
+
+lsys::Grammar parse(const std::string& text) {
+  return lsys::parse_grammar_text(
+      text, {.extra_settings = print_setting_names()}, "test.ls");
+}
+
+constexpr const char* kHilbert =
+    "n=2, \u03B4=90\u00B0\nwidth: 0.3\nA\n"
+    "A \u2192 B-F+CFC+F-D&F^D-F+&&CFC+F+B//\n"
+    "B \u2192 A&F^CFB^F^D^^-F-D^|F^B|FC^F^A//\n"
+    "C \u2192 |D^|F^B-F+C^F^A&&FA&F^C+F+B^F^D//\n"
+    "D \u2192 |CFB-F+B|FA&F^A&&FB-F+B|FC//\n";
+
+TEST(Solid, HilbertCubeIsOneGenusZeroShellOfTheExpectedVolume) {
+  const Solid s =
+      build_solid(parse(kHilbert), {.print = {.scale_mm_per_unit = 10.0}});
+  const ValidationReport& r = s.report.validation;
+  EXPECT_TRUE(r.is_printable());
+  EXPECT_EQ(r.shells, 1U);
+  EXPECT_EQ(r.genus, 0);
+  EXPECT_EQ(s.report.segments, 63U);
+  // One mitred tube of diameter 3 mm along 63 segments of 10 mm: its volume
+  // is the cross-section times the axis length.
+  const int m = tube_sides(1.5, 0.05);
+  const double section =
+      0.5 * m * 1.5 * 1.5 * std::sin(2 * std::numbers::pi / m);
+  EXPECT_NEAR(r.volume_mm3, section * 630.0, 0.01 * section * 630.0);
+}
+
+TEST(Solid, FitsTheLongestSideAndClampsToTheWall) {
+  const Solid s = build_solid(parse(kHilbert), {.print = {.wall_mm = 1.2}});
+  const glm::dvec3 size = s.report.validation.bounds.size();
+  EXPECT_NEAR(std::max({size.x, size.y, size.z}), 100.0, 0.5);
+  const Solid thin = build_solid(parse("\u03C9: F\nwidth: 0.001\n"),
+                                 {.print = {.wall_mm = 0.8, .size_mm = 50}});
+  // A heptagon of circumradius 0.4 mm: between its width across flats and
+  // its diameter.
+  EXPECT_GE(thin.report.validation.bounds.size().x,
+            0.8 * std::cos(3.1416 / 7) - 1e-6);
+  EXPECT_LE(thin.report.validation.bounds.size().x, 0.8 + 1e-6);
+  EXPECT_NEAR(thin.report.validation.bounds.size().z, 50.0, 0.01);
+}
+
+TEST(Solid, AbopBushWithLeavesIsOneValidShell) {
+  const std::string bush =
+      "n=3, \u03B4=22.5\u00B0\nwidth: 0.3\nwidth factor: 0.75\n\u03C9: A\n"
+      "A \u2192 [&FL!A]/////'[&FL!A]///////'[&FL!A]\nF \u2192 S/////F\n"
+      "S \u2192 FL\nL \u2192 ['''^^{-f+f+f-|-f+f+f}]\n";
+  const Solid s = build_solid(parse(bush));
+  expect_printable(s.mesh, 1);
+  EXPECT_EQ(s.report.polygons, 12U);
+  EXPECT_EQ(s.report.plates, 12U);
+  const auto stl = std::filesystem::temp_directory_path() /
+                   ("lsolid_bush_" + std::to_string(::getpid()) + ".stl");
+  write_mesh(s.mesh, stl, MeshFormat::StlBinary);
+  expect_admesh_agrees(stl);
+  // What is read back is exactly what was checked.
+  const TriangleMesh back = read_mesh(stl);
+  expect_printable(back, 1);
+  EXPECT_EQ(back.triangles.size(), s.mesh.triangles.size());
+  std::filesystem::remove(stl);
+}
+
+TEST(Solid, ReadsPrintSettingsFromTheFileUnlessTheCommandLineGivesThem) {
+  const lsys::Grammar g = parse("wall: 1.5mm\nheight: 4cm\n\u03C9: F\n");
+  const PrintSettings file = resolve_print_settings(g, {}, false, false, false);
+  EXPECT_EQ(file.wall_mm, 1.5);
+  EXPECT_EQ(file.height_mm, 40.0);
+  const PrintSettings cli = resolve_print_settings(
+      g, {.wall_mm = 0.4, .size_mm = 10.0}, true, true, false);
+  EXPECT_EQ(cli.wall_mm, 0.4);
+  EXPECT_FALSE(cli.height_mm.has_value());
+  EXPECT_EQ(cli.size_mm, 10.0);
+  const lsys::Grammar bad = parse("wall: 2 furlongs\n\u03C9: F\n");
+  try {
+    (void)resolve_print_settings(bad, {}, false, false, false);
+    FAIL() << "no error";
+  } catch (const lsys::ParseError& e) {
+    EXPECT_EQ(e.diagnostic().line, 1);
+    EXPECT_EQ(e.diagnostic().column, 9);
+    EXPECT_EQ(e.diagnostic().message,
+              "unknown unit 'furlongs': use mm, cm or in");
+  }
+}
+
+TEST(Solid, RefusesAModelThatDrawsNothing) {
+  EXPECT_THROW((void)build_solid(parse("\u03C9: A+B")), GeometryError);
+}
+
+TEST(Solid, WritesOverlappingPartsWhenAskedNotToUnite) {
+  const Solid s =
+      build_solid(parse("\u03C9: F[+F]F\n\u03B4=45"), {.unite = false});
+  EXPECT_EQ(s.report.tubes, 2U);
+  EXPECT_GT(s.report.validation.self_intersecting_pairs, 0U);
+}
+
+}  // namespace
+}  // namespace lsolid

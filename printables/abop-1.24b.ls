@@ -1,5 +1,6 @@
 // Bracketed plant, ABOP fig. 1.24b (p. 25); seed 000 ("Modelowanie drzewa").
 // A planar figure: it lies in the XZ plane, as ABOP draws it seen from the front.
+// test: n = 3 (the full model, n = 5, is built by 'make gallery', not in CI)
 // expect: segments 3125, polygons 0
 n=5, δ=20°
 width: 1

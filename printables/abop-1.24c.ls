@@ -1,5 +1,6 @@
 // Bracketed plant, ABOP fig. 1.24c (p. 25); seed 000 ("Modelowanie drzewa").
 // A planar figure: it lies in the XZ plane, as ABOP draws it seen from the front.
+// test: n = 2 (the full model, n = 4, is built by 'make gallery', not in CI)
 // expect: segments 4096, polygons 0
 n=4, δ=22.5°
 width: 1

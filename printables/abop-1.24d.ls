@@ -1,6 +1,7 @@
 // Bracketed plant, ABOP fig. 1.24d (p. 25); seed 000 ("Modelowanie drzewa")
 // and seed 003, which draws its first steps by hand.
 // A planar figure: it lies in the XZ plane, as ABOP draws it seen from the front.
+// test: n = 4 (the full model, n = 7, is built by 'make gallery', not in CI)
 // expect: segments 4118, polygons 0
 n=7, δ=20°
 width: 1

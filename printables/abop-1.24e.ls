@@ -1,5 +1,6 @@
 // Bracketed plant, ABOP fig. 1.24e (p. 25); seed 000 ("Modelowanie drzewa").
 // A planar figure: it lies in the XZ plane, as ABOP draws it seen from the front.
+// test: n = 4 (the full model, n = 7, is built by 'make gallery', not in CI)
 // expect: segments 4118, polygons 0
 n=7, δ=25.7°
 width: 1

@@ -2,6 +2,7 @@
 // Source: seed 000 ("Modelowanie drzewa") and seed 002 (the shrub of
 // "Digital Design of Nature", fig. 5.5). `!` thins each new branch by the
 // width factor; `'` steps the colour (stem 0, leaves 3 and on).
+// test: n = 4 (the full model, n = 7, is built by 'make gallery', not in CI)
 // expect: segments 3891, polygons 1284
 n=7, δ=22.5°
 width: 0.3

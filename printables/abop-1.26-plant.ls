@@ -2,6 +2,7 @@
 // drzewo"). Multi-character modules: each predecessor's name is declared by
 // the production itself. ABOP's wedge pitches with &&&&; the lecture's
 // second slide prints &&& (its first prints &&&&).
+// test: n = 3 (the full model, n = 5, is built by 'make gallery', not in CI)
 // expect: segments 533, polygons 327
 n=5, δ=18°
 width: 0.15

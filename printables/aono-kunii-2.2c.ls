@@ -1,6 +1,7 @@
 // Sympodial tree (Aono and Kunii), ABOP fig. 2.7c, Table 2.2 case c (p. 59).
 // Each step ends the axis and continues it by two lateral branches.
 // 2^10 - 1 = 1023 segments at n = 10.
+// test: n = 6 (the full model, n = 10, is built by 'make gallery', not in CI)
 // expect: segments 1023, polygons 0
 #define r1 0.9  /* contraction ratio 1 */
 #define r2 0.8  /* contraction ratio 2 */

@@ -4,6 +4,7 @@
 // </> twist left/right. Its radius shrinks by 0.0015 per generation.
 // The blog calls + "right"; lsolid's + turns left, so the tree comes out
 // mirrored, which a symmetric tree does not show.
+// test: n = 3 (the full model, n = 6, is built by 'make gallery', not in CI)
 // expect: segments 369, polygons 728
 aliases:
   f = F   /* create branch */

@@ -1,6 +1,7 @@
 // Honda's monopodial tree, ABOP fig. 2.6a, Table 2.1 case a (p. 56).
 // Source: seed 000 ("Opis geometrii drzewa (H. Honda)"), which prints
 // case a. 2^10 - 1 = 1023 segments at n = 10.
+// test: n = 7 (the full model, n = 10, is built by 'make gallery', not in CI)
 // expect: segments 1023, polygons 0
 #define r1 0.9   /* contraction ratio for the trunk */
 #define r2 0.6   /* contraction ratio for branches */

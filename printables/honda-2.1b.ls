@@ -2,6 +2,7 @@
 // Source: seed 000 ("Opis geometrii drzewa (H. Honda)"), which prints
 // case a; cases b to d change r2, a0 and a2 as Table 2.1 gives them.
 // 2^10 - 1 = 1023 segments at n = 10.
+// test: n = 7 (the full model, n = 10, is built by 'make gallery', not in CI)
 // expect: segments 1023, polygons 0
 #define r1 0.9   /* contraction ratio for the trunk */
 #define r2 0.9   /* contraction ratio for branches */

@@ -1,5 +1,6 @@
 // The tree of seed 003 ("[Houdini] L-System 初步了解"): ABOP fig. 1.24d in
 // Houdini's notation, premise and -> arrows.
+// test: n = 4 (the full model, n = 7, is built by 'make gallery', not in CI)
 // expect: segments 4118, polygons 0
 n=7, δ=20°
 width: 1

@@ -1,6 +1,7 @@
 // The Koch snowflake of seed 004 ("Lindenmayer Systems: an efficient
 // implementation"): axiom F--F--F, F → F+F--F+F, σ = 60°. The talk draws
 // iterations 0 to 3; this is 4. A planar figure in the XZ plane.
+// test: n = 3 (the full model, n = 4, is built by 'make gallery', not in CI)
 // expect: segments 768, polygons 0
 n=4, σ=60°
 width: 1

@@ -2,6 +2,7 @@
 // implementation"): A → B-A-B, B → A+B+A, where A and B both draw. The talk
 // prints σ = 90°, which does not close the triangle; the arrowhead curve
 // needs 60° (ABOP fig. 1.10b), which is used here.
+// test: n = 4 (the full model, n = 6, is built by 'make gallery', not in CI)
 // expect: segments 729, polygons 0
 n=6, σ=60°
 width: 1

@@ -1,6 +1,7 @@
 // Ternary tree with tropism, ABOP fig. 2.8a, Table 2.3 case a (p. 60).
 // ABOP's tropism vector (0,−1,0) is in cpfg's Y-up frame; lsolid is Z-up
 // (docs/turtle.md): (x, y, z) in ABOP is (x, -z, y) here.
+// test: n = 3 (the full model, n = 6, is built by 'make gallery', not in CI)
 // expect: segments 1457, polygons 0
 #define d1 94.74  /* divergence angle 1 */
 #define d2 132.63  /* divergence angle 2 */

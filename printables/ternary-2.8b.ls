@@ -1,6 +1,7 @@
 // Ternary tree with tropism, ABOP fig. 2.8b, Table 2.3 case b (p. 60).
 // ABOP's tropism vector (0,−1,0) is in cpfg's Y-up frame; lsolid is Z-up
 // (docs/turtle.md): (x, y, z) in ABOP is (x, -z, y) here.
+// test: n = 3 (the full model, n = 8, is built by 'make gallery', not in CI)
 // expect: segments 13121, polygons 0
 #define d1 137.5  /* divergence angle 1 */
 #define d2 137.5  /* divergence angle 2 */

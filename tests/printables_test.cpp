@@ -2,7 +2,10 @@
 // SPDX-License-Identifier: MIT
 //
 // The gallery as a test: every printables/*.ls file parses, derives and is
-// walked by the turtle, giving the counts its `// expect:` line states.
+// walked by the turtle, giving the counts its `// expect:` line states; and
+// `lsolid FILE.ls` turns it into an STL that `lsolid check` and admesh
+// accept, at the `n` of its `// test:` line where the full model is too slow
+// for CI.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,6 +20,8 @@
 #include "lsys/interpretation.hpp"
 #include "lsys/parser.hpp"
 #include "lsys/source.hpp"
+#include "support/mesh_checks.hpp"
+#include "support/run_command.hpp"
 
 namespace {
 
@@ -66,6 +71,37 @@ TEST_P(Printable, DerivesTheStatedSkeleton) {
                 std::isfinite(s.p1.z));
     ASSERT_GE(s.start_diameter, 0.0);
   }
+}
+
+// The derivation length for the solid test: the file's `// test: n = K`,
+// else the file's own.
+std::string test_length_option(const std::string& text) {
+  std::smatch match;
+  static const std::regex kLine(R"(// test: n = (\d+))");
+  return std::regex_search(text, match, kLine) ? " -n " + match[1].str() : "";
+}
+
+TEST_P(Printable, BuildsAnStlThatCheckAndAdmeshAccept) {
+  const std::string name = GetParam();
+  const std::string text =
+      lsolid::testing::read_text(kPrintables / (name + ".ls"));
+  const auto stl =
+      std::filesystem::temp_directory_path() /
+      ("lsolid_gallery_" + std::to_string(::getpid()) + "_" + name + ".stl");
+  const auto built = lsolid::testing::run_command(
+      lsolid::testing::lsolid() + " '" +
+      (kPrintables / (name + ".ls")).string() + "'" + test_length_option(text) +
+      " -o '" + stl.string() + "'");
+  ASSERT_EQ(built.exit_code, 0) << built.out << built.err;
+  EXPECT_NE(built.out.find("check: printable"), std::string::npos) << built.out;
+  EXPECT_NE(built.out.find("; 1 shell,"), std::string::npos) << built.out;
+  const auto checked = lsolid::testing::run_command(
+      lsolid::testing::lsolid() + " check --json '" + stl.string() + "'");
+  EXPECT_EQ(checked.exit_code, 0) << checked.out;
+  EXPECT_NE(checked.out.find("\"shells\": 1,"), std::string::npos)
+      << checked.out;
+  lsolid::testing::expect_admesh_agrees(stl);
+  std::filesystem::remove(stl);
 }
 
 INSTANTIATE_TEST_SUITE_P(Gallery, Printable,

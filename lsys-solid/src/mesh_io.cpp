@@ -137,17 +137,39 @@ TriangleMesh read_off(const std::string& data,
   return mesh;
 }
 
-// The facet normal as float-based readers recompute it from the stored
-// float corners (edge vectors in float, as admesh's stl_calculate_normal), so
-// that a checker comparing the two finds nothing to fix even on thin facets.
+// The facet normal exactly as admesh recomputes it from the stored float
+// corners (stl_calculate_normal and stl_normalize_vector in admesh's
+// normals.c: float edge vectors, the first product of each component
+// rounded to float), so that comparing the two finds nothing to "fix", even
+// on thin facets where float arithmetic loses digits.
 glm::vec3 facet_normal(const TriangleMesh& mesh,
                        const std::array<std::uint32_t, 3>& t) {
-  const glm::vec3 a(mesh.vertices[t[0]]);
-  const glm::vec3 e1 = glm::vec3(mesh.vertices[t[1]]) - a;
-  const glm::vec3 e2 = glm::vec3(mesh.vertices[t[2]]) - a;
-  const glm::dvec3 n = glm::cross(glm::dvec3(e1), glm::dvec3(e2));
-  const double length = glm::length(n);
-  return length > 1e-12 ? glm::vec3(n / length) : glm::vec3(0.0F);
+  std::array<float, 3> p0{};
+  std::array<float, 3> v1{};
+  std::array<float, 3> v2{};
+  for (int k = 0; k < 3; ++k) {
+    p0[static_cast<std::size_t>(k)] = to_float(mesh.vertices[t[0]][k]);
+    v1[static_cast<std::size_t>(k)] =
+        to_float(mesh.vertices[t[1]][k]) - p0[static_cast<std::size_t>(k)];
+    v2[static_cast<std::size_t>(k)] =
+        to_float(mesh.vertices[t[2]][k]) - p0[static_cast<std::size_t>(k)];
+  }
+  const auto component = [&](int a, int b) {
+    const double first = static_cast<double>(static_cast<float>(
+        static_cast<double>(v1[static_cast<std::size_t>(a)]) *
+        static_cast<double>(v2[static_cast<std::size_t>(b)])));
+    return static_cast<float>(
+        first - static_cast<double>(v1[static_cast<std::size_t>(b)]) *
+                    static_cast<double>(v2[static_cast<std::size_t>(a)]));
+  };
+  std::array<float, 3> n{component(1, 2), component(2, 0), component(0, 1)};
+  const double length = std::sqrt(static_cast<double>(n[0]) * n[0] +
+                                  static_cast<double>(n[1]) * n[1] +
+                                  static_cast<double>(n[2]) * n[2]);
+  if (length < 1e-12) return glm::vec3(0.0F);
+  const double factor = 1.0 / length;
+  for (float& c : n) c = static_cast<float>(c * factor);
+  return {n[0], n[1], n[2]};
 }
 
 std::string encode(const TriangleMesh& mesh, MeshFormat format) {

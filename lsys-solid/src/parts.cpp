@@ -30,6 +30,7 @@ constexpr double kMaxBendDeg = 100.0;  // a sharper bend breaks the chain
 constexpr double kMitreBudget = 0.8;   // of a segment's length, for mitres
 constexpr double kJointMargin = 1.06;  // joint inradius over the largest cap
 constexpr double kGolden = 0.6180339887498949;
+constexpr double kClearance = 1.6;  // mitres reach up to 1/cos(50°) of r
 
 glm::dvec3 direction(const lsys::Segment& s) {
   return glm::normalize(s.p1 - s.p0);
@@ -166,6 +167,7 @@ class PartBuilder {
                                         node_radius(seg(first).parent)));
     }
     std::vector<std::int32_t> run{first};
+    run_.start(first);
     double start_extent = 0.0;
     for (std::int32_t next = continuation_[static_cast<std::size_t>(first)];
          next >= 0; next = continuation_[static_cast<std::size_t>(next)]) {
@@ -175,18 +177,123 @@ class PartBuilder {
           std::max(seg(last).end_diameter, seg(next).start_diameter) / 2.0;
       const double extent = r * std::tan(theta * kPi / 360.0);
       if (start_extent + extent <= kMitreBudget * length(seg(last)) &&
-          extent <= kMitreBudget * length(seg(next))) {
+          extent <= kMitreBudget * length(seg(next)) &&
+          !run_.comes_near(next)) {
         run.push_back(next);
+        run_.add(next);
         start_extent = extent;
         continue;
       }
       emit_tube(run);
       add_joint(seg(last).p1, r);
       run.assign(1, next);
+      run_.start(next);
       start_extent = 0.0;
     }
     emit_tube(run);
   }
+
+  // The segments of the tube being built, in a grid, to tell when the next
+  // segment would pass so close to an earlier one that the tube would cut
+  // itself (space-filling curves turn back on themselves; a tube must not).
+  class RunGrid {
+   public:
+    explicit RunGrid(const lsys::Skeleton& skeleton)
+        : segments_(skeleton.segments) {
+      double longest = 0.0;
+      double widest = 0.0;
+      for (const lsys::Segment& s : segments_) {
+        longest = std::max(longest, glm::length(s.p1 - s.p0));
+        widest = std::max({widest, s.start_diameter, s.end_diameter});
+      }
+      // Segments closer than the clearance have midpoints in adjacent cells.
+      cell_ = std::max(longest + kClearance * widest, 1e-9);
+    }
+    void start(std::int32_t first) {
+      cells_.clear();
+      last_ = -1;
+      add(first);
+    }
+    void add(std::int32_t i) {
+      if (last_ >= 0) cells_[key(centre(last_))].push_back(last_);
+      last_ = i;  // the newest stays out: it touches the next one
+    }
+    // True if segment i comes within the sum of the radii (widened for
+    // mitres) of a segment of the run other than the newest.
+    bool comes_near(std::int32_t i) const {
+      const glm::dvec3 c = centre(i);
+      for (int dx = -1; dx <= 1; ++dx) {
+        for (int dy = -1; dy <= 1; ++dy) {
+          for (int dz = -1; dz <= 1; ++dz) {
+            auto k = key(c);
+            k[0] += dx;
+            k[1] += dy;
+            k[2] += dz;
+            const auto it = cells_.find(k);
+            if (it == cells_.end()) continue;
+            for (const std::int32_t j : it->second) {
+              if (distance(i, j) < kClearance * (radius(i) + radius(j)))
+                return true;
+            }
+          }
+        }
+      }
+      return false;
+    }
+
+   private:
+    using Key = std::array<std::int64_t, 3>;
+    struct KeyHash {
+      std::size_t operator()(const Key& k) const noexcept {
+        return static_cast<std::size_t>(k[0] * 73856093LL ^ k[1] * 19349663LL ^
+                                        k[2] * 83492791LL);
+      }
+    };
+    glm::dvec3 centre(std::int32_t i) const {
+      const lsys::Segment& s = segments_[static_cast<std::size_t>(i)];
+      return (s.p0 + s.p1) / 2.0;
+    }
+    double radius(std::int32_t i) const {
+      const lsys::Segment& s = segments_[static_cast<std::size_t>(i)];
+      return std::max(s.start_diameter, s.end_diameter) / 2.0;
+    }
+    Key key(const glm::dvec3& p) const {
+      return {static_cast<std::int64_t>(std::floor(p.x / cell_)),
+              static_cast<std::int64_t>(std::floor(p.y / cell_)),
+              static_cast<std::int64_t>(std::floor(p.z / cell_))};
+    }
+    // The distance between two segments (Lumelsky's closest points).
+    double distance(std::int32_t i, std::int32_t j) const {
+      const lsys::Segment& a = segments_[static_cast<std::size_t>(i)];
+      const lsys::Segment& b = segments_[static_cast<std::size_t>(j)];
+      const glm::dvec3 d1 = a.p1 - a.p0;
+      const glm::dvec3 d2 = b.p1 - b.p0;
+      const glm::dvec3 r = a.p0 - b.p0;
+      const double aa = glm::dot(d1, d1);
+      const double ee = glm::dot(d2, d2);
+      const double f = glm::dot(d2, r);
+      const double c = glm::dot(d1, r);
+      const double bb = glm::dot(d1, d2);
+      const double denom = aa * ee - bb * bb;
+      double s = denom > 1e-18 * aa * ee
+                     ? std::clamp((bb * f - c * ee) / denom, 0.0, 1.0)
+                     : 0.0;
+      double t = (bb * s + f) / ee;
+      if (t < 0.0) {
+        t = 0.0;
+        s = std::clamp(-c / aa, 0.0, 1.0);
+      } else if (t > 1.0) {
+        t = 1.0;
+        s = std::clamp((bb - c) / aa, 0.0, 1.0);
+      }
+      return glm::length(a.p0 + d1 * s - (b.p0 + d2 * t));
+    }
+
+    const std::vector<lsys::Segment>& segments_;
+    double cell_ = 0.0;
+    std::unordered_map<Key, std::vector<std::int32_t>, KeyHash> cells_;
+    std::int32_t last_ = -1;
+  };
 
   void emit_tube(const std::vector<std::int32_t>& run) {
     const std::size_t k = run.size();
@@ -430,6 +537,7 @@ class PartBuilder {
   PartOptions options_;
   std::vector<std::int32_t> continuation_;
   std::vector<bool> is_continuation_;
+  RunGrid run_{skeleton_};
   std::vector<Joint> joints_;  // in order of creation, for reproducibility
   std::unordered_map<NodeKey, std::size_t, NodeKeyHash> joint_index_;
   PartSet set_;

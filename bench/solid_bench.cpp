@@ -1,0 +1,77 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// The solid pipeline's stages (docs/performance.md). Each case runs once per
+// repetition; run:
+//   build/bench/solid_bench --benchmark_repetitions=3
+//       --benchmark_report_aggregates_only=true
+#include <benchmark/benchmark.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <string>
+
+#include "lsolid/solid.hpp"
+#include "lsys/parser.hpp"
+#include "lsys/source.hpp"
+
+namespace {
+
+lsys::Grammar load(const std::string& name) {
+  return lsys::parse_grammar(
+      lsys::load_source(std::filesystem::path(LSOLID_SOURCE_DIR) / "printables" / name),
+      {.extra_settings = lsolid::print_setting_names()});
+}
+
+// The peak resident set of one build, in a forked child so that the
+// figure is this case's alone.
+double peak_rss_mib(const lsys::Grammar& grammar, int n) {
+  const pid_t child = fork();
+  if (child == 0) {
+    const lsolid::Solid s =
+        lsolid::build_solid(grammar, {.derivation = {.derivation_length = n}});
+    _exit(s.report.validation.is_printable() ? 0 : 1);
+  }
+  int status = 0;
+  rusage usage{};
+  if (child < 0 || wait4(child, &status, 0, &usage) != child) return -1.0;
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+void build(benchmark::State& state, const std::string& file, int n) {
+  const lsys::Grammar grammar = load(file);
+  lsolid::SolidReport report;
+  for (auto _ : state) {
+    const lsolid::Solid s =
+        lsolid::build_solid(grammar, {.derivation = {.derivation_length = n}});
+    report = s.report;
+    if (!report.validation.is_printable()) state.SkipWithError("not printable");
+  }
+  state.counters["segments"] = static_cast<double>(report.segments);
+  state.counters["leaves"] = static_cast<double>(report.polygons);
+  state.counters["parts"] =
+      static_cast<double>(report.tubes + report.joints + report.plates);
+  state.counters["booleans"] = static_cast<double>(report.union_stats.booleans);
+  state.counters["triangles"] = static_cast<double>(report.validation.triangles);
+  state.counters["skeleton_s"] = report.seconds.skeleton;
+  state.counters["parts_s"] = report.seconds.parts;
+  state.counters["union_s"] = report.seconds.unite;
+  state.counters["rounding_s"] = report.seconds.round;
+  state.counters["check_s"] = report.seconds.check;
+  state.counters["peak_rss_MiB"] = peak_rss_mib(grammar, n);
+}
+
+BENCHMARK_CAPTURE(build, hilbert_n3, "hilbert-cube.ls", 3)
+    ->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK_CAPTURE(build, bush_n5, "abop-1.25-bush.ls", 5)
+    ->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK_CAPTURE(build, bush_n6, "abop-1.25-bush.ls", 6)
+    ->Unit(benchmark::kSecond)->Iterations(1);
+BENCHMARK_CAPTURE(build, bush_n7, "abop-1.25-bush.ls", 7)
+    ->Unit(benchmark::kSecond)->Iterations(1);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -24,10 +24,10 @@ void print_report(const SolidReport& r, bool united) {
   }
   if (united) {
     fmt::print(
-        "union: {} booleans, {} joined without a boolean, {} retried, {} "
-        "cavities filled\n",
-        r.union_stats.booleans, r.union_stats.concatenations,
-        r.union_stats.retries, r.cavities_filled);
+        "union: {} booleans ({} rounded to doubles), {} joined without a "
+        "boolean, {} retried, {} cavities filled\n",
+        r.union_stats.booleans, r.union_stats.rounded,
+        r.union_stats.concatenations, r.union_stats.retries, r.cavities_filled);
   }
   fmt::print("triangles: {}\n", v.triangles);
   fmt::print("volume: {:.1f} mm³\n", v.volume_mm3);

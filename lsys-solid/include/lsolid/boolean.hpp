@@ -15,6 +15,8 @@ struct UnionStats {
   std::size_t booleans = 0;        ///< corefinement unions computed
   std::size_t concatenations = 0;  ///< pairs with disjoint boxes, joined
   std::size_t retries = 0;         ///< unions retried after a perturbation
+  /// Unions whose new vertices could be rounded to doubles (see design.md).
+  std::size_t rounded = 0;
 };
 
 /// The union of all parts.

@@ -16,14 +16,19 @@
 #define CGAL_NO_POSTCONDITIONS
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <glm/common.hpp>
+#include <set>
 #include <string>
 #include <unordered_map>
 
@@ -84,10 +89,72 @@ std::uint32_t morton(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
   return spread(x) | (spread(y) << 1U) | (spread(z) << 2U);
 }
 
-[[maybe_unused]] void make_exact(ExactMesh& mesh) {
-  // Collapses the lazy kernel's construction DAGs, which otherwise grow with
-  // every union and slow the next one down.
-  for (const auto v : mesh.vertices()) CGAL::exact(mesh.point(v));
+// The vertices a union created are lazy exact points whose exact values
+// (rationals) grow with every level of the reduction; most of the union's
+// time went into GMP for them. Where rounding them to doubles provably keeps
+// the mesh valid (no face near them becomes degenerate or intersecting,
+// tested with exact predicates on the rounded coordinates), they are
+// rounded, and the next union starts from doubles again. Where it would not,
+// the exact points stay. Returns true if the points were rounded.
+bool round_new_points(ExactMesh& mesh) {
+  using Face = InexactMesh::Face_index;
+  std::vector<bool> is_new(mesh.number_of_vertices(), false);
+  bool any = false;
+  for (const auto v : mesh.vertices()) {
+    const auto& a = CGAL::approx(mesh.point(v));
+    if (!a.x().is_point() || !a.y().is_point() || !a.z().is_point()) {
+      is_new[static_cast<std::size_t>(v)] = true;
+      any = true;
+    }
+  }
+  if (!any) return false;
+  InexactMesh rounded;
+  rounded.reserve(mesh.number_of_vertices(), mesh.number_of_edges(),
+                  mesh.number_of_faces());
+  for (const auto v : mesh.vertices()) {
+    const Exact::Point_3& p = mesh.point(v);
+    rounded.add_vertex(Inexact::Point_3(CGAL::to_double(p.x()),
+                                        CGAL::to_double(p.y()),
+                                        CGAL::to_double(p.z())));
+  }
+  std::vector<Face> near_new;
+  for (const auto f : mesh.faces()) {
+    std::array<InexactMesh::Vertex_index, 3> corners;
+    std::size_t k = 0;
+    bool touches_new = false;
+    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+      corners[k++] = InexactMesh::Vertex_index(static_cast<std::uint32_t>(v));
+      touches_new = touches_new || is_new[static_cast<std::size_t>(v)];
+    }
+    const Face g = rounded.add_face(corners[0], corners[1], corners[2]);
+    if (g == InexactMesh::null_face()) return false;
+    if (touches_new) {
+      if (PMP::is_degenerate_triangle_face(g, rounded)) return false;
+      near_new.push_back(g);
+    }
+  }
+  // Faces whose boxes meet a changed face: the only ones it can now cut.
+  using FaceBox = CGAL::Box_intersection_d::Box_with_info_d<double, 3, Face>;
+  std::vector<FaceBox> changed_boxes;
+  std::vector<FaceBox> all_boxes;
+  for (const Face f : near_new)
+    changed_boxes.emplace_back(PMP::face_bbox(f, rounded), f);
+  for (const Face f : rounded.faces())
+    all_boxes.emplace_back(PMP::face_bbox(f, rounded), f);
+  std::set<Face> range(near_new.begin(), near_new.end());
+  CGAL::box_intersection_d(changed_boxes.begin(), changed_boxes.end(),
+                           all_boxes.begin(), all_boxes.end(),
+                           [&](const FaceBox&, const FaceBox& other) {
+                             range.insert(other.info());
+                           });
+  if (PMP::does_self_intersect(range, rounded)) return false;
+  for (const auto v : mesh.vertices()) {
+    if (!is_new[static_cast<std::size_t>(v)]) continue;
+    const Inexact::Point_3& p =
+        rounded.point(InexactMesh::Vertex_index(static_cast<std::uint32_t>(v)));
+    mesh.point(v) = Exact::Point_3(p.x(), p.y(), p.z());
+  }
+  return true;
 }
 
 void translate(ExactMesh& mesh, const Exact::Vector_3& by) {
@@ -197,7 +264,7 @@ class Unioner {
         last_failure_ = "the parts touch at a point";
       }
       if (!ok) continue;
-      // make_exact(out);
+      if (round_new_points(out)) ++stats_.rounded;
       ++stats_.booleans;
       a.mesh = std::move(out);
       a.box += b.box;

@@ -32,6 +32,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "conversion.hpp"
 #include "lsolid/boolean.hpp"
 #include "lsolid/errors.hpp"
 
@@ -46,23 +47,6 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 
 constexpr double kPerturbationMm = 1e-5;
 constexpr int kAttempts = 3;
-
-template <typename Mesh>
-Mesh to_surface_mesh(const TriangleMesh& m) {
-  Mesh out;
-  std::vector<typename Mesh::Vertex_index> vertices;
-  vertices.reserve(m.vertices.size());
-  for (const glm::dvec3& p : m.vertices) {
-    vertices.push_back(out.add_vertex(typename Mesh::Point(p.x, p.y, p.z)));
-  }
-  for (const auto& t : m.triangles) {
-    if (out.add_face(vertices[t[0]], vertices[t[1]], vertices[t[2]]) ==
-        Mesh::null_face()) {
-      return Mesh();
-    }
-  }
-  return out;
-}
 
 CGAL::Bbox_3 box_of(const TriangleMesh& m) {
   const Box b = bounds(m);
@@ -285,30 +269,6 @@ class Unioner {
     }
     if (g.parts.size() > shown) {
       out += " and " + std::to_string(g.parts.size() - shown) + " more parts";
-    }
-    return out;
-  }
-
-  static TriangleMesh to_triangle_mesh(const ExactMesh& mesh) {
-    TriangleMesh out;
-    std::unordered_map<std::uint32_t, std::uint32_t> index;
-    for (const auto v : mesh.vertices()) {
-      const auto& p = mesh.point(v);
-      index.emplace(static_cast<std::uint32_t>(v),
-                    static_cast<std::uint32_t>(out.vertices.size()));
-      out.vertices.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-                                CGAL::to_double(p.z()));
-    }
-    for (const auto f : mesh.faces()) {
-      std::array<std::uint32_t, 3> t{};
-      int k = 0;
-      for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
-        if (k < 3)
-          t[static_cast<std::size_t>(k)] =
-              index.at(static_cast<std::uint32_t>(v));
-        ++k;
-      }
-      if (k == 3) out.triangles.push_back(t);
     }
     return out;
   }

@@ -16,6 +16,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "conversion.hpp"
 #include "lsolid/rounding.hpp"
 #include "vertex_key.hpp"
 
@@ -32,37 +33,6 @@ constexpr int kMaxPasses = 6;
 constexpr double kShortEdgeMm = 1e-4;
 constexpr double kCapCosine = -0.985;  // angles above ~170° are caps
 
-Mesh to_mesh(const TriangleMesh& m) {
-  Mesh out;
-  std::vector<Mesh::Vertex_index> v;
-  v.reserve(m.vertices.size());
-  for (const glm::dvec3& p : m.vertices)
-    v.push_back(out.add_vertex(Point(p.x, p.y, p.z)));
-  for (const auto& t : m.triangles) out.add_face(v[t[0]], v[t[1]], v[t[2]]);
-  return out;
-}
-
-TriangleMesh from_mesh(const Mesh& mesh) {
-  TriangleMesh out;
-  std::unordered_map<std::uint32_t, std::uint32_t> index;
-  for (const auto v : mesh.vertices()) {
-    index.emplace(static_cast<std::uint32_t>(v),
-                  static_cast<std::uint32_t>(out.vertices.size()));
-    const Point& p = mesh.point(v);
-    out.vertices.emplace_back(p.x(), p.y(), p.z());
-  }
-  for (const auto f : mesh.faces()) {
-    std::array<std::uint32_t, 3> t{};
-    std::size_t k = 0;
-    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
-      if (k < 3) t[k] = index.at(static_cast<std::uint32_t>(v));
-      ++k;
-    }
-    if (k == 3) out.triangles.push_back(t);
-  }
-  return out;
-}
-
 void snap_to_float(Mesh& mesh) {
   for (const auto v : mesh.vertices()) {
     const Point& p = mesh.point(v);
@@ -76,7 +46,7 @@ std::size_t count_faces(const Mesh& mesh) { return mesh.number_of_faces(); }
 
 TriangleMesh round_and_repair(const TriangleMesh& input, bool float_coordinates,
                               RoundingStats& stats) {
-  Mesh mesh = to_mesh(input);
+  Mesh mesh = to_surface_mesh<Mesh>(input);
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     stats.passes = pass + 1;
     if (float_coordinates) snap_to_float(mesh);
@@ -114,7 +84,7 @@ TriangleMesh round_and_repair(const TriangleMesh& input, bool float_coordinates,
     }
   }
   if (float_coordinates) snap_to_float(mesh);  // what is checked is written
-  return from_mesh(mesh);
+  return to_triangle_mesh(mesh);
 }
 
 }  // namespace lsolid

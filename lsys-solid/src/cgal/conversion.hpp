@@ -1,0 +1,59 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <CGAL/boost/graph/iterator.h>
+
+#include <array>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "lsolid/mesh.hpp"
+
+namespace lsolid {
+
+/// A CGAL Surface_mesh of the triangles; empty if a triangle cannot be added
+/// (the triangles do not form a 2-manifold with consistent orientation).
+template <typename Mesh>
+Mesh to_surface_mesh(const TriangleMesh& m) {
+  Mesh out;
+  std::vector<typename Mesh::Vertex_index> vertices;
+  vertices.reserve(m.vertices.size());
+  for (const glm::dvec3& p : m.vertices) {
+    vertices.push_back(out.add_vertex(typename Mesh::Point(p.x, p.y, p.z)));
+  }
+  for (const auto& t : m.triangles) {
+    if (out.add_face(vertices[t[0]], vertices[t[1]], vertices[t[2]]) ==
+        Mesh::null_face()) {
+      return Mesh();
+    }
+  }
+  return out;
+}
+
+/// The triangles of a Surface_mesh, with coordinates rounded to doubles.
+template <typename Mesh>
+TriangleMesh to_triangle_mesh(const Mesh& mesh) {
+  TriangleMesh out;
+  std::unordered_map<std::uint32_t, std::uint32_t> index;
+  for (const auto v : mesh.vertices()) {
+    const auto& p = mesh.point(v);
+    index.emplace(static_cast<std::uint32_t>(v),
+                  static_cast<std::uint32_t>(out.vertices.size()));
+    out.vertices.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                              CGAL::to_double(p.z()));
+  }
+  for (const auto f : mesh.faces()) {
+    std::array<std::uint32_t, 3> t{};
+    std::size_t k = 0;
+    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+      if (k < 3) t[k] = index.at(static_cast<std::uint32_t>(v));
+      ++k;
+    }
+    if (k == 3) out.triangles.push_back(t);
+  }
+  return out;
+}
+
+}  // namespace lsolid

@@ -11,10 +11,6 @@
 #include "lsys/derivation.hpp"
 
 #include <algorithm>
-#include <array>
-#include <charconv>
-#include <cmath>
-#include <map>
 #include <string>
 
 #include "lsys/diagnostic.hpp"
@@ -23,23 +19,6 @@
 #include "size_model.hpp"
 
 namespace lsys {
-namespace {
-
-bool has_cut(const Grammar& g) {
-  const auto cuts = [](const Successor& s) {
-    return std::find(s.symbols().begin(), s.symbols().end(), kCut) !=
-           s.symbols().end();
-  };
-  if (cuts(g.axiom)) return true;
-  for (const auto* rules : {&g.productions, &g.decompositions}) {
-    for (const Production& p : *rules) {
-      if (cuts(p.successor)) return true;
-    }
-  }
-  return false;
-}
-
-}  // namespace
 
 std::optional<SizePrediction> predict_size(const Grammar& grammar,
                                            int derivation_length) {

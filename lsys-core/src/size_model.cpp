@@ -20,21 +20,6 @@ bool is_drawing(TurtleCommand c) {
   return c == TurtleCommand::Draw || c == TurtleCommand::DrawNoVertex;
 }
 
-bool successor_has_cut(const Successor& s) {
-  return std::find(s.symbols().begin(), s.symbols().end(), kCut) !=
-         s.symbols().end();
-}
-
-bool has_cut(const Grammar& g) {
-  if (successor_has_cut(g.axiom)) return true;
-  for (const auto* rules : {&g.productions, &g.decompositions}) {
-    for (const Production& p : *rules) {
-      if (successor_has_cut(p.successor)) return true;
-    }
-  }
-  return false;
-}
-
 bool is_deterministic(const Grammar& g) {
   for (const auto* rules : {&g.productions, &g.decompositions}) {
     for (const Production& p : *rules) {
@@ -175,6 +160,20 @@ class CountMatrix {
 };
 
 }  // namespace
+
+bool has_cut(const Grammar& g) {
+  const auto successor_has_cut = [](const Successor& s) {
+    return std::find(s.symbols().begin(), s.symbols().end(), kCut) !=
+           s.symbols().end();
+  };
+  if (successor_has_cut(g.axiom)) return true;
+  for (const auto* rules : {&g.productions, &g.decompositions}) {
+    for (const Production& p : *rules) {
+      if (successor_has_cut(p.successor)) return true;
+    }
+  }
+  return false;
+}
 
 InterpretationCosts::InterpretationCosts(const Grammar& grammar,
                                          bool is_lower_bound)

@@ -51,6 +51,10 @@ class InterpretationCosts {
 [[nodiscard]] std::optional<SizePrediction> size_lower_bound(
     const Grammar& grammar, int n);
 
+/// True if the axiom, a production or a decomposition makes a `%`: then
+/// strings are rewritten whole and sizes are not predicted.
+[[nodiscard]] bool has_cut(const Grammar& grammar);
+
 /// A count as text: an integer, or "more than 1e+300" when capped.
 [[nodiscard]] std::string count_text(double value);
 

@@ -9,6 +9,7 @@
 #include "lsolid/errors.hpp"
 #include "lsolid/mesh_io.hpp"
 #include "lsolid/solid.hpp"
+#include "lsys/diagnostic.hpp"
 
 namespace lsolid::cli {
 namespace {
@@ -68,7 +69,16 @@ int run_build(const BuildCommand& command) {
     output =
         std::filesystem::path(command.input.file).replace_extension(".stl");
   }
-  const MeshFormat format = format_for(output, command.ascii);
+  MeshFormat format = MeshFormat::StlBinary;
+  try {
+    format = format_for(output, command.ascii);
+  } catch (const IoError& e) {
+    // A name we cannot write is a usage error, found before any work.
+    throw lsys::ParseError(lsys::Diagnostic{
+        .file = "--output",
+        .message = "unknown output format '" + output.extension().string() +
+                   "': use .stl or .off"});
+  }
   const lsys::Grammar grammar = load_grammar(command.input);
   SolidOptions options;
   options.derivation = derivation_options(command.input);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "support/run_command.hpp"
@@ -103,6 +104,127 @@ TEST(Cli, ReportsABadDefineWithACaret) {
                   kSource / "printables");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "--define:1:4: error: bad number '0.5.5'\nr2=0.5.5\n   ^\n");
+}
+
+class Build : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("lsolid_cli_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::filesystem::path dir_;
+};
+
+TEST_F(Build, WritesAPrintableStlAndReports) {
+  const auto out = dir_ / "hilbert.stl";
+  const auto r = run_command(lsolid() + " " +
+                             (kSource / "printables/hilbert-cube.ls").string() +
+                             " --size 60mm -o " + out.string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  for (const char* line : {"segments: 63, leaves: 0\n", "triangles: ",
+                           "volume: ", "size: ", "time: skeleton ",
+                           "check: printable: closed, manifold, outward, no "
+                           "self-intersections; 1 shell, genus 0\n"}) {
+    EXPECT_NE(r.out.find(line), std::string::npos) << line;
+  }
+  EXPECT_TRUE(std::filesystem::exists(out));
+  const auto check = run_command(lsolid() + " check " + out.string());
+  EXPECT_EQ(check.exit_code, 0) << check.out;
+  EXPECT_NE(check.out.find("verdict: printable\n"), std::string::npos);
+  EXPECT_NE(check.out.find(" x 60.000 x 60.000 mm"), std::string::npos)
+      << check.out;
+}
+
+TEST_F(Build, WritesBesideTheInputByDefaultAndTakesOff) {
+  std::filesystem::copy_file(kSource / "printables/branches-90.ls",
+                             dir_ / "b.ls");
+  EXPECT_EQ(run_command(lsolid() + " b.ls", dir_).exit_code, 0);
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "b.stl"));
+  EXPECT_EQ(run_command(lsolid() + " b.ls -o b.off", dir_).exit_code, 0);
+  EXPECT_EQ(read_text(dir_ / "b.off").substr(0, 4), "OFF\n");
+  EXPECT_EQ(run_command(lsolid() + " b.ls --ascii -o a.stl", dir_).exit_code,
+            0);
+  EXPECT_EQ(read_text(dir_ / "a.stl").substr(0, 12), "solid lsolid");
+}
+
+TEST_F(Build, LeavesNothingBehindOnBadInput) {
+  { std::ofstream(dir_ / "bad.ls") << "\u03C9: F\nF \u2192 F]\n"; }
+  { std::ofstream(dir_ / "old.stl") << "keep me"; }
+  const auto r = run_command(lsolid() + " bad.ls -o old.stl", dir_);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(read_text(dir_ / "old.stl"), "keep me");
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& e :
+       std::filesystem::directory_iterator(dir_)) {
+    ++entries;
+  }
+  EXPECT_EQ(entries, 2U);
+}
+
+TEST_F(Build, RefusesUnknownFormatsAndEmptyModels) {
+  std::filesystem::copy_file(kSource / "printables/branches-90.ls",
+                             dir_ / "b.ls");
+  const auto r = run_command(lsolid() + " b.ls -o b.obj", dir_);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(
+      r.err,
+      "--output: error: unknown output format '.obj': use .stl or .off\n");
+  { std::ofstream(dir_ / "empty.ls") << "\u03C9: A+B\n"; }
+  const auto empty = run_command(lsolid() + " empty.ls", dir_);
+  EXPECT_EQ(empty.exit_code, 3);
+  EXPECT_EQ(empty.err,
+            "error: nothing to build: the L-system draws no segment and no "
+            "polygon\n");
+}
+
+TEST_F(Build, ReadsPrintSettingsFromTheFile) {
+  // A thin F: 2 cm tall, as wide as the 1 mm wall.
+  {
+    std::ofstream(dir_ / "h.ls")
+        << "height: 2cm\nwall: 1mm\nwidth: 0.001\n\u03C9: F\n";
+  }
+  EXPECT_EQ(run_command(lsolid() + " h.ls", dir_).exit_code, 0);
+  const auto check = run_command(lsolid() + " check --json h.stl", dir_);
+  EXPECT_NE(check.out.find(", 0], \"max\": ["), std::string::npos) << check.out;
+  EXPECT_NE(check.out.find(", 20]}"), std::string::npos) << check.out;
+  // A heptagon of circumradius 0.5 mm (0.684 mm²) times 20 mm.
+  EXPECT_NE(check.out.find("\"volume_mm3\": 13.68"), std::string::npos)
+      << check.out;
+}
+
+TEST_F(Build, SkeletonInMillimetresWithPrintOptions) {
+  const auto r = run_command(lsolid() + " skeleton " +
+                             (kSource / "printables/hilbert-cube.ls").string() +
+                             " --scale 10mm --wall 1mm --json -n 1");
+  EXPECT_EQ(r.exit_code, 0);
+  const std::string head =
+      "{\"units\": \"mm\", \"segments\": [\n{\"p0\": [0,0,0], \"p1\": [10,0,0]";
+  EXPECT_EQ(r.out.substr(0, head.size()), head);
+  EXPECT_NE(r.out.find("\"r0\": 1.5"), std::string::npos);
+}
+
+TEST(Check, ExitsOneForAnUnprintableMeshAndTwoForAnUnreadableOne) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const auto off =
+      dir / ("lsolid_two_boxes_" + std::to_string(::getpid()) + ".off");
+  {
+    std::ofstream out(off);
+    out << "OFF\n8 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n5 5 5\n6 5 5\n5 6 5\n5 5 "
+           "6\n"
+           "3 0 2 1\n3 4 5 6\n";
+  }
+  const auto r = run_command(lsolid() + " check " + off.string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.out.find("verdict: NOT printable"), std::string::npos);
+  EXPECT_NE(r.out.find("boundary edges (the mesh is not closed)"),
+            std::string::npos);
+  std::filesystem::remove(off);
+  const auto missing = run_command(lsolid() + " check /nonexistent.stl");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("cannot read"), std::string::npos);
 }
 
 // Every file in tests/data/diagnostics has the exact stderr beside it.

@@ -1,3 +1,4 @@
+#include <cstdio>
 // Copyright 2026 the lsolid authors
 // SPDX-License-Identifier: MIT
 //
@@ -10,8 +11,6 @@
 // Wang et al. 2008's double reflection, here by the equivalent minimal
 // rotation per bend), and each part gets its own ring phase, so that
 // overlapping parts never share vertices or faces exactly.
-#include "lsolid/parts.hpp"
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -22,6 +21,8 @@
 #include <numbers>
 #include <unordered_map>
 
+#include "lsolid/parts.hpp"
+
 namespace lsolid {
 namespace {
 
@@ -31,6 +32,8 @@ constexpr double kMitreBudget = 0.8;   // of a segment's length, for mitres
 constexpr double kJointMargin = 1.06;  // joint inradius over the largest cap
 constexpr double kGolden = 0.6180339887498949;
 constexpr double kClearance = 1.6;  // mitres reach up to 1/cos(50°) of r
+constexpr double kPathClearance =
+    2.5;  // half a turn of radius 1.25 r, and more
 
 glm::dvec3 direction(const lsys::Segment& s) {
   return glm::normalize(s.p1 - s.p0);
@@ -196,6 +199,9 @@ class PartBuilder {
   // The segments of the tube being built, in a grid, to tell when the next
   // segment would pass so close to an earlier one that the tube would cut
   // itself (space-filling curves turn back on themselves; a tube must not).
+  // Segments close along the path are left out: the mitre budget keeps the
+  // path's radius of curvature above 1.25 r, so a tube can only come back to
+  // itself after a path of more than half a turn.
   class RunGrid {
    public:
     explicit RunGrid(const lsys::Skeleton& skeleton)
@@ -211,12 +217,16 @@ class PartBuilder {
     }
     void start(std::int32_t first) {
       cells_.clear();
+      path_start_.clear();
+      path_length_ = 0.0;
       last_ = -1;
       add(first);
     }
     void add(std::int32_t i) {
       if (last_ >= 0) cells_[key(centre(last_))].push_back(last_);
       last_ = i;  // the newest stays out: it touches the next one
+      path_start_[i] = path_length_;
+      path_length_ += length_of(i);
     }
     // True if segment i comes within the sum of the radii (widened for
     // mitres) of a segment of the run other than the newest.
@@ -232,8 +242,13 @@ class PartBuilder {
             const auto it = cells_.find(k);
             if (it == cells_.end()) continue;
             for (const std::int32_t j : it->second) {
-              if (distance(i, j) < kClearance * (radius(i) + radius(j)))
+              const double reach = radius(i) + radius(j);
+              const double along =
+                  path_length_ - path_start_.at(j) - length_of(j);
+              if (along > kPathClearance * reach &&
+                  distance(i, j) < kClearance * reach) {
                 return true;
+              }
             }
           }
         }
@@ -252,6 +267,10 @@ class PartBuilder {
     glm::dvec3 centre(std::int32_t i) const {
       const lsys::Segment& s = segments_[static_cast<std::size_t>(i)];
       return (s.p0 + s.p1) / 2.0;
+    }
+    double length_of(std::int32_t i) const {
+      const lsys::Segment& s = segments_[static_cast<std::size_t>(i)];
+      return glm::length(s.p1 - s.p0);
     }
     double radius(std::int32_t i) const {
       const lsys::Segment& s = segments_[static_cast<std::size_t>(i)];
@@ -292,6 +311,8 @@ class PartBuilder {
     const std::vector<lsys::Segment>& segments_;
     double cell_ = 0.0;
     std::unordered_map<Key, std::vector<std::int32_t>, KeyHash> cells_;
+    std::unordered_map<std::int32_t, double> path_start_;  // along the run
+    double path_length_ = 0.0;
     std::int32_t last_ = -1;
   };
 

@@ -21,7 +21,8 @@ void print_report(const SolidReport& r, bool united) {
       "parts: {} tubes, {} joints, {} leaf plates; scale {:.4g} mm per unit\n",
       r.tubes, r.joints, r.plates, r.mm_per_unit);
   if (r.skipped_polygons > 0) {
-    fmt::print("skipped: {} polygons without area\n", r.skipped_polygons);
+    fmt::print("skipped: {} polygons without area or crossing themselves\n",
+               r.skipped_polygons);
   }
   if (united) {
     fmt::print(

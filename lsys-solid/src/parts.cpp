@@ -458,6 +458,10 @@ class PartBuilder {
     const glm::dvec3 n = newell / (2.0 * area);
     const std::vector<std::array<std::uint32_t, 3>> faces =
         triangulate(points, n);
+    if (faces.empty()) {  // the outline crosses itself: no plate to make
+      ++set_.skipped_polygons;
+      return;
+    }
     const auto count = static_cast<std::uint32_t>(points.size());
     TriangleMesh mesh;
     for (const glm::dvec3& p : points)
@@ -507,7 +511,8 @@ class PartBuilder {
     return out;
   }
 
-  // Ear clipping in the polygon's plane; a fan if the polygon is not simple.
+  // Ear clipping in the polygon's plane; nothing if the outline is not
+  // simple (a plate of a crossing outline would cut itself).
   static std::vector<std::array<std::uint32_t, 3>> triangulate(
       const std::vector<glm::dvec3>& points, const glm::dvec3& n) {
     const glm::dvec3 u = any_perpendicular(n);
@@ -519,6 +524,20 @@ class PartBuilder {
       return (p[b].x - p[a].x) * (p[c].y - p[a].y) -
              (p[b].y - p[a].y) * (p[c].x - p[a].x);
     };
+    const auto size = static_cast<std::uint32_t>(points.size());
+    for (std::uint32_t i = 0; i < size; ++i) {
+      for (std::uint32_t j = i + 2; j < size; ++j) {
+        if (i == 0 && j == size - 1) continue;  // adjacent through the wrap
+        const std::uint32_t a = i, b = (i + 1) % size, c = j,
+                            d = (j + 1) % size;
+        const double d1 = cross(a, b, c), d2 = cross(a, b, d);
+        const double d3 = cross(c, d, a), d4 = cross(c, d, b);
+        if (((d1 <= 0 && d2 >= 0) || (d1 >= 0 && d2 <= 0)) &&
+            ((d3 <= 0 && d4 >= 0) || (d3 >= 0 && d4 <= 0))) {
+          return {};
+        }
+      }
+    }
     std::vector<std::uint32_t> left(points.size());
     for (std::uint32_t i = 0; i < left.size(); ++i) left[i] = i;
     std::vector<std::array<std::uint32_t, 3>> out;
@@ -543,12 +562,7 @@ class PartBuilder {
         left.erase(left.begin() + static_cast<std::ptrdiff_t>(i));
         clipped = true;
       }
-      if (!clipped) {
-        out.clear();
-        for (std::uint32_t i = 1; i + 1 < points.size(); ++i)
-          out.push_back({0, i, i + 1});
-        return out;
-      }
+      if (!clipped) return {};
     }
     out.push_back({left[0], left[1], left[2]});
     return out;

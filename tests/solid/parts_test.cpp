@@ -95,6 +95,17 @@ TEST(Parts, TriangulatesConcaveLeaves) {
   EXPECT_NEAR(signed_volume(parts.parts[0].mesh), 24.0, 1e-9);
 }
 
+TEST(Parts, SkipsPolygonsThatCrossThemselves) {
+  lsys::Skeleton s;
+  lsys::Polygon bowtie;
+  bowtie.points = {
+      {0, 0, 0}, {6, 0, 6}, {6, 0, 0}, {0, 0, 2}};  // unequal lobes
+  s.polygons = {bowtie};
+  const PartSet parts = build_parts(s);
+  EXPECT_EQ(parts.skipped_polygons, 1U);
+  EXPECT_TRUE(parts.parts.empty());
+}
+
 TEST(Parts, SkipsPolygonsWithoutArea) {
   lsys::Skeleton s;
   lsys::Polygon line;

@@ -29,7 +29,8 @@ struct PartSet {
   std::size_t tubes = 0;
   std::size_t joints = 0;
   std::size_t plates = 0;
-  std::size_t skipped_polygons = 0;  ///< without area: nothing to print
+  /// Polygons without area or whose outline crosses itself: not printed.
+  std::size_t skipped_polygons = 0;
 };
 
 /// Meshes a millimetre skeleton (see scale_to_print) into parts whose union

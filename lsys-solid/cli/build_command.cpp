@@ -18,8 +18,9 @@ void print_report(const SolidReport& r, bool united) {
   const ValidationReport& v = r.validation;
   fmt::print("segments: {}, leaves: {}\n", r.segments, r.polygons);
   fmt::print(
-      "parts: {} tubes, {} joints, {} leaf plates; scale {:.4g} mm per unit\n",
-      r.tubes, r.joints, r.plates, r.mm_per_unit);
+      "parts: {} tubes, {} junction hulls, {} joints, {} leaf plates; scale "
+      "{:.4g} mm per unit\n",
+      r.tubes, r.junctions, r.joints, r.plates, r.mm_per_unit);
   if (r.skipped_polygons > 0) {
     fmt::print("skipped: {} polygons without area or crossing themselves\n",
                r.skipped_polygons);

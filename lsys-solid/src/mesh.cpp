@@ -79,22 +79,29 @@ std::size_t remove_cavities(TriangleMesh& mesh) {
       if (!inserted) parent[find(f)] = find(it->second);
     }
   }
+  // Volumes are summed about a vertex of each shell, not the origin, so
+  // that a tiny shell far from the origin keeps its sign.
   std::unordered_map<std::uint32_t, double> six_volume;
+  std::unordered_map<std::uint32_t, glm::dvec3> origin;
   for (std::uint32_t f = 0; f < n; ++f) {
     const auto& t = mesh.triangles[f];
+    const glm::dvec3 o =
+        origin.try_emplace(find(f), mesh.vertices[t[0]]).first->second;
     six_volume[find(f)] +=
-        glm::dot(mesh.vertices[t[0]],
-                 glm::cross(mesh.vertices[t[1]], mesh.vertices[t[2]]));
+        glm::dot(mesh.vertices[t[0]] - o,
+                 glm::cross(mesh.vertices[t[1]] - o, mesh.vertices[t[2]] - o));
   }
+  // A shell without volume (a cavity that rounding flattened) goes too.
+  constexpr double kNoVolume = 6e-12;  // six times 1e-12 mm³
   std::size_t removed = 0;
   for (const auto& [root, volume] : six_volume) {
-    if (volume < 0.0) ++removed;
+    if (volume < kNoVolume) ++removed;
   }
   if (removed == 0) return 0;
   std::vector<std::array<std::uint32_t, 3>> kept;
   kept.reserve(n);
   for (std::uint32_t f = 0; f < n; ++f) {
-    if (six_volume[find(f)] >= 0.0) kept.push_back(mesh.triangles[f]);
+    if (six_volume[find(f)] >= kNoVolume) kept.push_back(mesh.triangles[f]);
   }
   mesh.triangles = std::move(kept);
   remove_unused_vertices(mesh);

@@ -1,4 +1,3 @@
-#include <cstdio>
 // Copyright 2026 the lsolid authors
 // SPDX-License-Identifier: MIT
 //
@@ -11,17 +10,22 @@
 // Wang et al. 2008's double reflection, here by the equivalent minimal
 // rotation per bend), and each part gets its own ring phase, so that
 // overlapping parts never share vertices or faces exactly.
+#include "lsolid/parts.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <numbers>
+#include <string>
 #include <unordered_map>
 
-#include "lsolid/parts.hpp"
+#include "cgal/junction_geometry.hpp"
+#include "union_find.hpp"
 
 namespace lsolid {
 namespace {
@@ -34,6 +38,13 @@ constexpr double kGolden = 0.6180339887498949;
 constexpr double kClearance = 1.6;  // mitres reach up to 1/cos(50°) of r
 constexpr double kPathClearance =
     2.5;  // half a turn of radius 1.25 r, and more
+// Hull junctions (see plan_hull).
+constexpr double kJunctionMargin = 0.05;     // of the widest radius
+constexpr double kJunctionMinOffset = 0.5;   // of the widest radius
+constexpr double kJunctionMinSpread = 1e-3;  // 1 - cos of the closest pair
+constexpr int kMaxRounds = 8;
+constexpr double kOnAxis = 0.1;  // of the stem radius: a leaf starts there
+constexpr double kStraight = 1.0 - 1e-12;  // cos of a bend too small to see
 
 glm::dvec3 direction(const lsys::Segment& s) {
   return glm::normalize(s.p1 - s.p0);
@@ -84,6 +95,48 @@ NodeKey node_key(const glm::dvec3& p) {
           std::bit_cast<std::uint64_t>(p.z + 0.0)};
 }
 
+// Where a tube's ring at a junction lies: in `segment`, at `local_mm` from
+// the segment's end at the junction's side.
+struct RingPlace {
+  std::int32_t segment = -1;
+  double local_mm = 0.0;
+};
+
+// A branch point: where a segment's children start (or several chains start
+// at the same point), and how it is meshed.
+struct Junction {
+  glm::dvec3 at{0.0};
+  std::int32_t incoming = -1;          // the segment that ends here, or -1
+  std::vector<std::int32_t> outgoing;  // the segments that start here
+  // Per tube, the incoming first, then the outgoing: the distance from `at`
+  // to its ring, the straight stretch the ring may lie on, and where in it
+  // the ring lies (tubes that run straight on may have the ring beyond
+  // their first segment).
+  std::vector<double> offsets_mm;
+  std::vector<std::vector<std::int32_t>> stretches;
+  std::vector<double> stretch_mm;
+  std::vector<RingPlace> places;
+  // Meshed as the convex hull of the tubes' rings, stitched to the tubes
+  // without a boolean; otherwise the tubes run to `at` and a joint sphere
+  // encloses their caps, for the union to merge.
+  bool hull = false;
+};
+
+// A piece of a stitched part: its triangles index the shared vertex pool, so
+// that pieces meeting at a ring share its vertices exactly.
+struct Piece {
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::string label;
+  std::int32_t hull_of = -1;           // the junction this hull meshes
+  std::vector<std::int32_t> attached;  // hull junctions at a tube's ends
+};
+
+// A tube's ring at a hull junction, in the order in which the tube's side
+// faces use its edges (ring[i] to ring[i + 1]).
+struct Ring {
+  std::vector<std::uint32_t> vertices;
+};
+
 class PartBuilder {
  public:
   PartBuilder(const lsys::Skeleton& skeleton, const PartOptions& options)
@@ -91,11 +144,17 @@ class PartBuilder {
 
   PartSet build() {
     choose_continuations();
-    for (std::size_t i = 0; i < skeleton_.segments.size(); ++i) {
-      if (!is_continuation_[i]) walk_chain(static_cast<std::int32_t>(i));
-    }
-    for (std::size_t i = 0; i < skeleton_.polygons.size(); ++i) {
-      add_plate(skeleton_.polygons[i], i);
+    find_junctions();
+    for (int round = 0;; ++round) {
+      std::vector<std::int32_t> revert = mesh_round();
+      if (revert.empty()) break;
+      for (const std::int32_t j : revert) {
+        junctions_[static_cast<std::size_t>(j)].hull = false;
+      }
+      if (round + 1 >= kMaxRounds) {
+        // Without hulls every part is a closed tube, sphere or plate.
+        for (Junction& j : junctions_) j.hull = false;
+      }
     }
     std::size_t index = 0;
     for (const Joint& joint : joints_) {
@@ -113,6 +172,29 @@ class PartBuilder {
     glm::dvec3 center;
     double radius;  // the largest cap it must enclose
   };
+
+  // Meshes everything with the current choice of hull junctions. Returns the
+  // junctions whose hulls failed or made a stitched part cut itself; if
+  // there are any, the round's output is discarded.
+  std::vector<std::int32_t> mesh_round() {
+    set_ = PartSet{};
+    pool_.clear();
+    pieces_.clear();
+    rings_.assign(junctions_.size(), {});
+    joints_.clear();
+    joint_index_.clear();
+    for (std::size_t i = 0; i < skeleton_.segments.size(); ++i) {
+      if (!is_continuation_[i]) walk_chain(static_cast<std::int32_t>(i));
+    }
+    std::vector<std::int32_t> revert = build_hulls();
+    if (!revert.empty()) return revert;
+    revert = assemble();
+    if (!revert.empty()) return revert;
+    for (std::size_t i = 0; i < skeleton_.polygons.size(); ++i) {
+      add_plate(skeleton_.polygons[i], i);
+    }
+    return {};
+  }
 
   // The continuation of a segment is the child that turns least (and by at
   // most kMaxBendDeg), the later one on a tie: `F[+F]F` continues with the
@@ -139,8 +221,218 @@ class PartBuilder {
     }
   }
 
+  // Branch points: the end of a segment with a child other than its
+  // continuation, and a point where several chains start.
+  void find_junctions() {
+    const auto& segments = skeleton_.segments;
+    std::vector<std::vector<std::int32_t>> children(segments.size());
+    std::unordered_map<NodeKey, std::vector<std::int32_t>, NodeKeyHash> roots;
+    std::vector<NodeKey> root_order;
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      const auto self = static_cast<std::int32_t>(i);
+      if (segments[i].parent >= 0) {
+        children[static_cast<std::size_t>(segments[i].parent)].push_back(self);
+      } else {
+        auto [it, inserted] = roots.try_emplace(node_key(segments[i].p0));
+        if (inserted) root_order.push_back(it->first);
+        it->second.push_back(self);
+      }
+    }
+    start_junction_.assign(segments.size(), -1);
+    end_junction_.assign(segments.size(), -1);
+    const auto add = [&](Junction j) {
+      const auto index = static_cast<std::int32_t>(junctions_.size());
+      if (j.incoming >= 0)
+        end_junction_[static_cast<std::size_t>(j.incoming)] = index;
+      for (const std::int32_t o : j.outgoing)
+        start_junction_[static_cast<std::size_t>(o)] = index;
+      junctions_.push_back(std::move(j));
+    };
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      const std::vector<std::int32_t>& c = children[i];
+      if (c.size() >= 2 || (c.size() == 1 && continuation_[i] != c[0])) {
+        add(Junction{.at = segments[i].p1,
+                     .incoming = static_cast<std::int32_t>(i),
+                     .outgoing = c});
+      }
+    }
+    for (const NodeKey& key : root_order) {
+      const std::vector<std::int32_t>& starts = roots.at(key);
+      if (starts.size() >= 2) {
+        add(Junction{.at = seg(starts[0]).p0, .outgoing = starts});
+      }
+    }
+    incoming_ring_.assign(segments.size(), -1);
+    for (Junction& j : junctions_) plan_hull(j);
+    for (Junction& j : junctions_) {
+      if (j.hull) place_rings(j);
+    }
+    for (std::size_t j = 0; j < junctions_.size(); ++j) {
+      if (junctions_[j].hull && junctions_[j].incoming >= 0) {
+        incoming_ring_[static_cast<std::size_t>(
+            junctions_[j].places.front().segment)] =
+            static_cast<std::int32_t>(j);
+      }
+    }
+  }
+
+  bool runs_straight_on(std::int32_t a, std::int32_t b) const {
+    return glm::dot(direction(seg(a)), direction(seg(b))) > kStraight;
+  }
+
+  // The segments a tube runs straight along from a junction, away from it,
+  // up to the next junction (whose segment is included) or bend.
+  std::vector<std::int32_t> stretch_out(std::int32_t first) const {
+    std::vector<std::int32_t> out{first};
+    for (std::int32_t i = first;;) {
+      const std::int32_t next = continuation_[static_cast<std::size_t>(i)];
+      if (end_junction_[static_cast<std::size_t>(i)] >= 0 || next < 0 ||
+          !runs_straight_on(i, next))
+        return out;
+      out.push_back(i = next);
+    }
+  }
+  std::vector<std::int32_t> stretch_in(std::int32_t last) const {
+    std::vector<std::int32_t> out{last};
+    for (std::int32_t i = last;;) {
+      const std::int32_t parent = seg(i).parent;
+      if (start_junction_[static_cast<std::size_t>(i)] >= 0 || parent < 0 ||
+          continuation_[static_cast<std::size_t>(parent)] != i ||
+          !runs_straight_on(parent, i))
+        return out;
+      out.push_back(i = parent);
+    }
+  }
+
+  // Chooses, for every tube at the junction, the distance from the branch
+  // point to its ring such that each ring is a face of the convex hull of
+  // all rings: every other ring lies below its plane by a margin. For rings
+  // t and u at angle α, at distances s_t and s_u, with radius r_u, this
+  // needs s_t >= s_u cos α + r_u sin α + margin, solved here by iterating
+  // to the least fixed point. The hull is then a B-Mesh-style junction
+  // (Ji et al. 2010). A ring may lie beyond the tube's first segment where
+  // the tube runs straight on. Tubes too close in direction leave the
+  // junction to the union.
+  void plan_hull(Junction& j) const {
+    // Without an incoming tube the hull of the rings would leave the
+    // starting point out (the foot of a plant): the union joins those.
+    if (j.incoming < 0) return;
+    std::vector<glm::dvec3> dirs;
+    std::vector<double> radii;
+    const auto end_of = [&](std::vector<std::int32_t> stretch, double sign) {
+      dirs.push_back(sign * direction(seg(stretch[0])));
+      double radius = 0.0;
+      double along = 0.0;
+      for (const std::int32_t i : stretch) {
+        radius = std::max(
+            {radius, seg(i).start_diameter / 2.0, seg(i).end_diameter / 2.0});
+        along += length(seg(i));
+      }
+      radii.push_back(radius);
+      j.stretches.push_back(std::move(stretch));
+      j.stretch_mm.push_back(along);
+    };
+    end_of(stretch_in(j.incoming), -1.0);
+    for (const std::int32_t o : j.outgoing) end_of(stretch_out(o), 1.0);
+    const std::size_t n = dirs.size();
+    const double widest = *std::max_element(radii.begin(), radii.end());
+    const double margin = kJunctionMargin * widest;
+    std::vector<double> offsets(n);
+    for (std::size_t t = 0; t < n; ++t) {
+      offsets[t] = kJunctionMinOffset * radii[t];
+    }
+    for (std::size_t t = 0; t < n; ++t) {
+      for (std::size_t u = 0; u < n; ++u) {
+        if (t != u && 1.0 - glm::dot(dirs[t], dirs[u]) < kJunctionMinSpread)
+          return;
+      }
+    }
+    // Each pass raises an offset to what the others require; the fixed
+    // point is reached geometrically fast unless two tubes are nearly
+    // parallel, which the spread test excludes.
+    for (int pass = 0; pass < 200; ++pass) {
+      bool changed = false;
+      for (std::size_t t = 0; t < n; ++t) {
+        for (std::size_t u = 0; u < n; ++u) {
+          if (t == u) continue;
+          const double c = glm::dot(dirs[t], dirs[u]);
+          const double needed =
+              offsets[u] * c +
+              radii[u] * std::sqrt(std::max(0.0, 1.0 - c * c)) + margin;
+          if (needed > offsets[t] * (1.0 + 1e-12)) {
+            offsets[t] = needed;
+            changed = true;
+          }
+        }
+      }
+      if (!changed) {
+        j.offsets_mm = std::move(offsets);
+        j.hull = true;
+        return;
+      }
+    }
+  }
+
+  // Keeps a hull junction only if every ring fits on its stretch, leaving
+  // room for the ring of a hull junction at the stretch's far end. (A mitre
+  // there is checked as the chain is walked, and broken if it does not fit.)
+  void place_rings(Junction& j) {
+    for (std::size_t e = 0; e < j.offsets_mm.size(); ++e) {
+      const std::vector<std::int32_t>& stretch = j.stretches[e];
+      double room = kMitreBudget * j.stretch_mm[e];
+      const std::int32_t far =
+          e == 0 ? start_junction_[static_cast<std::size_t>(stretch.back())]
+                 : end_junction_[static_cast<std::size_t>(stretch.back())];
+      if (far >= 0 && junctions_[static_cast<std::size_t>(far)].hull) {
+        const Junction& k = junctions_[static_cast<std::size_t>(far)];
+        double theirs = 0.0;
+        if (e == 0) {  // our incoming tube is one of their outgoing ones
+          const auto it =
+              std::find(k.outgoing.begin(), k.outgoing.end(), stretch.back());
+          theirs = k.offsets_mm[1 + static_cast<std::size_t>(
+                                        it - k.outgoing.begin())];
+        } else {
+          theirs = k.offsets_mm[0];
+        }
+        room -= theirs;
+      }
+      if (j.offsets_mm[e] > room) {
+        j.hull = false;
+        j.places.clear();
+        return;
+      }
+      double before = 0.0;
+      for (const std::int32_t i : stretch) {
+        const double l = length(seg(i));
+        if (before + l > j.offsets_mm[e]) {
+          j.places.push_back({i, j.offsets_mm[e] - before});
+          break;
+        }
+        before += l;
+      }
+    }
+  }
+
   const lsys::Segment& seg(std::int32_t i) const {
     return skeleton_.segments[static_cast<std::size_t>(i)];
+  }
+
+  // The hull junction at the start of segment i, or -1.
+  std::int32_t hull_at_start(std::int32_t i) const {
+    const std::int32_t j = start_junction_[static_cast<std::size_t>(i)];
+    return j >= 0 && junctions_[static_cast<std::size_t>(j)].hull ? j : -1;
+  }
+  // The hull junction whose incoming ring lies in segment i, or -1.
+  std::int32_t ring_ahead(std::int32_t i) const {
+    const std::int32_t j = incoming_ring_[static_cast<std::size_t>(i)];
+    return j >= 0 && junctions_[static_cast<std::size_t>(j)].hull ? j : -1;
+  }
+  const RingPlace& place_of(std::int32_t junction, std::int32_t tube) const {
+    const Junction& j = junctions_[static_cast<std::size_t>(junction)];
+    const std::size_t skip = j.incoming >= 0 ? 1 : 0;
+    if (tube == j.incoming) return j.places.front();
+    const auto it = std::find(j.outgoing.begin(), j.outgoing.end(), tube);
+    return j.places[skip + static_cast<std::size_t>(it - j.outgoing.begin())];
   }
 
   void add_joint(const glm::dvec3& center, double radius) {
@@ -163,37 +455,68 @@ class PartBuilder {
   }
 
   // Follows continuations from a chain's first segment, breaking where a
-  // mitre would not fit, and emits one tube per unbroken run.
+  // mitre would not fit and at hull junctions, and emits one tube per
+  // unbroken run. At a hull junction a run ends or starts at the tube's
+  // ring; the segments between ring and junction are inside the hull.
   void walk_chain(std::int32_t first) {
-    if (seg(first).parent >= 0) {
+    std::int32_t run_start = hull_at_start(first);
+    double start_local = 0.0;
+    if (run_start >= 0) {
+      const RingPlace& place = place_of(run_start, first);
+      first = place.segment;
+      start_local = place.local_mm;
+    } else if (seg(first).parent >= 0) {
       add_joint(seg(first).p0, std::max(seg(first).start_diameter / 2.0,
                                         node_radius(seg(first).parent)));
     }
     std::vector<std::int32_t> run{first};
     run_.start(first);
-    double start_extent = 0.0;
-    for (std::int32_t next = continuation_[static_cast<std::size_t>(first)];
-         next >= 0; next = continuation_[static_cast<std::size_t>(next)]) {
+    double start_extent = start_local;
+    for (;;) {
       const std::int32_t last = run.back();
+      const std::int32_t junction = ring_ahead(last);
+      if (junction >= 0) {
+        const Junction& j = junctions_[static_cast<std::size_t>(junction)];
+        emit_tube(run, run_start, start_local, junction,
+                  j.places.front().local_mm);
+        const std::int32_t next =
+            continuation_[static_cast<std::size_t>(j.incoming)];
+        if (next < 0) return;
+        const RingPlace& place = place_of(junction, next);
+        run.assign(1, place.segment);
+        run_.start(place.segment);
+        run_start = junction;
+        start_local = start_extent = place.local_mm;
+        continue;
+      }
+      const std::int32_t next = continuation_[static_cast<std::size_t>(last)];
+      if (next < 0) break;
       const double theta = bend_deg(direction(seg(last)), direction(seg(next)));
       const double r =
           std::max(seg(last).end_diameter, seg(next).start_diameter) / 2.0;
       const double extent = r * std::tan(theta * kPi / 360.0);
+      const std::int32_t ahead = ring_ahead(next);
+      const double end_need = ahead < 0
+                                  ? 0.0
+                                  : junctions_[static_cast<std::size_t>(ahead)]
+                                        .places.front()
+                                        .local_mm;
       if (start_extent + extent <= kMitreBudget * length(seg(last)) &&
-          extent <= kMitreBudget * length(seg(next)) &&
+          extent + end_need <= kMitreBudget * length(seg(next)) &&
           !run_.comes_near(next)) {
         run.push_back(next);
         run_.add(next);
         start_extent = extent;
         continue;
       }
-      emit_tube(run);
+      emit_tube(run, run_start, start_local, -1, 0.0);
       add_joint(seg(last).p1, r);
       run.assign(1, next);
       run_.start(next);
-      start_extent = 0.0;
+      run_start = -1;
+      start_local = start_extent = 0.0;
     }
-    emit_tube(run);
+    emit_tube(run, run_start, start_local, -1, 0.0);
   }
 
   // The segments of the tube being built, in a grid, to tell when the next
@@ -316,33 +639,44 @@ class PartBuilder {
     std::int32_t last_ = -1;
   };
 
-  void emit_tube(const std::vector<std::int32_t>& run) {
+  // A tube along the run; its ends lie `offset` inside the run at hull
+  // junctions, where they are open rings for the hull, and are capped
+  // elsewhere.
+  void emit_tube(const std::vector<std::int32_t>& run, std::int32_t start_hull,
+                 double start_local, std::int32_t end_hull, double end_local) {
     const std::size_t k = run.size();
     std::vector<glm::dvec3> centers(k + 1);
     std::vector<double> radii(k + 1);
-    centers[0] = seg(run[0]).p0;
-    radii[0] = seg(run[0]).start_diameter / 2.0;
+    const lsys::Segment& head = seg(run[0]);
+    const lsys::Segment& tail = seg(run[k - 1]);
+    const double s0 = start_local / length(head);
+    const double s1 = end_local / length(tail);
+    centers[0] = head.p0 + (head.p1 - head.p0) * s0;
+    radii[0] =
+        (head.start_diameter + (head.end_diameter - head.start_diameter) * s0) /
+        2.0;
     for (std::size_t j = 1; j < k; ++j) {
       centers[j] = seg(run[j]).p0;
       radii[j] =
           std::max(seg(run[j - 1]).end_diameter, seg(run[j]).start_diameter) /
           2.0;
     }
-    centers[k] = seg(run[k - 1]).p1;
-    radii[k] = seg(run[k - 1]).end_diameter / 2.0;
+    centers[k] = tail.p1 + (tail.p0 - tail.p1) * s1;
+    radii[k] =
+        (tail.end_diameter + (tail.start_diameter - tail.end_diameter) * s1) /
+        2.0;
     const double largest = *std::max_element(radii.begin(), radii.end());
     const int m = tube_sides(largest, options_.tolerance_mm);
 
     // The ring frame of the first segment, turned by this tube's own phase.
-    glm::dvec3 d = direction(seg(run[0]));
+    glm::dvec3 d = direction(head);
     const double phase =
         std::fmod(static_cast<double>(set_.tubes) * kGolden, 1.0) * 2.0 * kPi /
         m;
     glm::dvec3 a =
         rotate(any_perpendicular(d), d, std::cos(phase), std::sin(phase));
 
-    TriangleMesh mesh;
-    mesh.vertices.reserve((k + 1) * static_cast<std::size_t>(m));
+    const auto base = static_cast<std::uint32_t>(pool_.size());
     const auto ring = [&](const glm::dvec3& center, double radius,
                           const glm::dvec3& dir, const glm::dvec3& axis_a,
                           const glm::dvec3* mitre_normal) {
@@ -355,7 +689,7 @@ class PartBuilder {
           q -=
               dir * (glm::dot(q, *mitre_normal) / glm::dot(dir, *mitre_normal));
         }
-        mesh.vertices.push_back(center + q);
+        pool_.push_back(center + q);
       }
     };
     ring(centers[0], radii[0], d, a, nullptr);
@@ -368,28 +702,213 @@ class PartBuilder {
     }
     ring(centers[k], radii[k], d, a, nullptr);
 
-    const auto v = [m](std::size_t ring_index, int i) {
-      return static_cast<std::uint32_t>(ring_index *
-                                            static_cast<std::size_t>(m) +
-                                        static_cast<std::size_t>((i + m) % m));
+    const auto v = [m, base](std::size_t ring_index, int i) {
+      return base + static_cast<std::uint32_t>(
+                        ring_index * static_cast<std::size_t>(m) +
+                        static_cast<std::size_t>((i + m) % m));
     };
+    Piece piece;
     for (std::size_t j = 0; j < k; ++j) {
       for (int i = 0; i < m; ++i) {
-        mesh.triangles.push_back({v(j, i), v(j, i + 1), v(j + 1, i + 1)});
-        mesh.triangles.push_back({v(j, i), v(j + 1, i + 1), v(j + 1, i)});
+        piece.triangles.push_back({v(j, i), v(j, i + 1), v(j + 1, i + 1)});
+        piece.triangles.push_back({v(j, i), v(j + 1, i + 1), v(j + 1, i)});
       }
     }
-    for (int i = 1; i + 1 < m; ++i) {
-      mesh.triangles.push_back({v(0, 0), v(0, i + 1), v(0, i)});
-      mesh.triangles.push_back({v(k, 0), v(k, i), v(k, i + 1)});
+    const auto self = static_cast<std::int32_t>(pieces_.size());
+    if (start_hull >= 0) {
+      Ring r;
+      for (int i = 0; i < m; ++i) r.vertices.push_back(v(0, i));
+      rings_[static_cast<std::size_t>(start_hull)].push_back(std::move(r));
+      piece.attached.push_back(start_hull);
+    } else {
+      for (int i = 1; i + 1 < m; ++i)
+        piece.triangles.push_back({v(0, 0), v(0, i + 1), v(0, i)});
+    }
+    if (end_hull >= 0) {
+      Ring r;  // the side faces run from (k, i + 1) to (k, i)
+      for (int i = m; i > 0; --i) r.vertices.push_back(v(k, i));
+      rings_[static_cast<std::size_t>(end_hull)].push_back(std::move(r));
+      piece.attached.push_back(end_hull);
+    } else {
+      for (int i = 1; i + 1 < m; ++i)
+        piece.triangles.push_back({v(k, 0), v(k, i), v(k, i + 1)});
     }
     const std::int32_t front = run.front();
     const std::int32_t back = run.back();
-    set_.parts.push_back(Part{
-        std::move(mesh),
-        front == back ? fmt::format("tube of segment {}", front)
-                      : fmt::format("tube of segments {}-{}", front, back)});
+    piece.label = front == back
+                      ? fmt::format("tube of segment {}", front)
+                      : fmt::format("tube of segments {}-{}", front, back);
+    (void)self;
+    pieces_.push_back(std::move(piece));
     ++set_.tubes;
+  }
+
+  // The hull of each hull junction's rings, without the rings' own faces:
+  // a surface whose boundary is exactly the rings, in the orientation that
+  // closes the tubes. Returns the junctions where that did not come out.
+  std::vector<std::int32_t> build_hulls() {
+    std::vector<std::int32_t> failed;
+    hull_piece_.assign(junctions_.size(), -1);
+    for (std::size_t j = 0; j < junctions_.size(); ++j) {
+      const Junction& junction = junctions_[j];
+      if (!junction.hull) continue;
+      const std::vector<Ring>& rings = rings_[j];
+      const std::size_t expected =
+          junction.outgoing.size() + (junction.incoming >= 0 ? 1 : 0);
+      std::vector<glm::dvec3> points;
+      std::vector<std::uint32_t> global;
+      std::vector<std::size_t> ring_of;
+      for (std::size_t r = 0; r < rings.size(); ++r) {
+        for (const std::uint32_t g : rings[r].vertices) {
+          points.push_back(pool_[g]);
+          global.push_back(g);
+          ring_of.push_back(r);
+        }
+      }
+      Piece piece;
+      std::size_t removed = 0;
+      std::vector<bool> used(points.size(), false);
+      for (const auto& t : convex_hull_triangles(points)) {
+        for (const std::uint32_t i : t) used[i] = true;
+        if (ring_of[t[0]] == ring_of[t[1]] && ring_of[t[1]] == ring_of[t[2]]) {
+          ++removed;
+          continue;
+        }
+        piece.triangles.push_back({global[t[0]], global[t[1]], global[t[2]]});
+      }
+      if (rings.size() != expected || !is_ring_bounded(piece, rings, removed) ||
+          std::find(used.begin(), used.end(), false) != used.end()) {
+        failed.push_back(static_cast<std::int32_t>(j));
+        continue;
+      }
+      piece.hull_of = static_cast<std::int32_t>(j);
+      piece.label = fmt::format("junction at ({:.3f}, {:.3f}, {:.3f}) mm",
+                                junction.at.x, junction.at.y, junction.at.z);
+      hull_piece_[j] = static_cast<std::int32_t>(pieces_.size());
+      pieces_.push_back(std::move(piece));
+      ++set_.junctions;
+    }
+    return failed;
+  }
+
+  // True if the hull piece's open edges are exactly the rings' edges, each
+  // reversed (ring[i + 1] to ring[i]), and the faces taken out are exactly
+  // the rings' triangulations.
+  static bool is_ring_bounded(const Piece& piece,
+                              const std::vector<Ring>& rings,
+                              std::size_t removed) {
+    std::size_t expected_removed = 0;
+    std::unordered_map<std::uint64_t, int> directed;
+    const auto key = [](std::uint32_t a, std::uint32_t b) {
+      return (static_cast<std::uint64_t>(a) << 32U) | b;
+    };
+    for (const auto& t : piece.triangles) {
+      for (int e = 0; e < 3; ++e) ++directed[key(t[e], t[(e + 1) % 3])];
+    }
+    std::size_t ring_edges = 0;
+    for (const Ring& r : rings) {
+      const std::size_t m = r.vertices.size();
+      expected_removed += m - 2;
+      for (std::size_t i = 0; i < m; ++i) {
+        const std::uint32_t a = r.vertices[i];
+        const std::uint32_t b = r.vertices[(i + 1) % m];
+        const auto it = directed.find(key(b, a));
+        if (it == directed.end() || it->second != 1 ||
+            directed.count(key(a, b)))
+          return false;
+        ++ring_edges;
+      }
+    }
+    if (removed != expected_removed) return false;
+    std::size_t open = 0;
+    for (const auto& [k, count] : directed) {
+      if (count != 1) return false;
+      const auto a = static_cast<std::uint32_t>(k >> 32U);
+      const auto b = static_cast<std::uint32_t>(k & 0xFFFFFFFFU);
+      if (!directed.count(key(b, a))) ++open;
+    }
+    return open == ring_edges;
+  }
+
+  // Joins pieces stitched at hull junctions into parts. A part whose pieces
+  // cut each other (a branch running into another of the same tree) is
+  // not a valid operand: the junctions that join the offending piece to the
+  // rest are returned, to be left to the union in the next round.
+  std::vector<std::int32_t> assemble() {
+    UnionFind groups(pieces_.size());
+    for (std::size_t p = 0; p < pieces_.size(); ++p) {
+      for (const std::int32_t j : pieces_[p].attached) {
+        const std::int32_t h = hull_piece_[static_cast<std::size_t>(j)];
+        if (h >= 0)
+          groups.join(static_cast<std::uint32_t>(p),
+                      static_cast<std::uint32_t>(h));
+      }
+    }
+    std::unordered_map<std::size_t, std::vector<std::size_t>> members;
+    std::vector<std::size_t> order;
+    for (std::size_t p = 0; p < pieces_.size(); ++p) {
+      auto [it, inserted] =
+          members.try_emplace(groups.find(static_cast<std::uint32_t>(p)));
+      if (inserted) order.push_back(it->first);
+      it->second.push_back(p);
+    }
+    std::vector<std::int32_t> revert;
+    std::vector<Part> parts;
+    for (const std::size_t root : order) {
+      const std::vector<std::size_t>& group = members.at(root);
+      TriangleMesh mesh;
+      std::vector<std::size_t> piece_of;
+      std::unordered_map<std::uint32_t, std::uint32_t> local;
+      std::size_t tubes = 0;
+      for (const std::size_t p : group) {
+        if (pieces_[p].hull_of < 0) ++tubes;
+        for (const auto& t : pieces_[p].triangles) {
+          std::array<std::uint32_t, 3> out{};
+          for (int c = 0; c < 3; ++c) {
+            const auto [it, inserted] = local.try_emplace(
+                t[c], static_cast<std::uint32_t>(mesh.vertices.size()));
+            if (inserted) mesh.vertices.push_back(pool_[t[c]]);
+            out[c] = it->second;
+          }
+          mesh.triangles.push_back(out);
+          piece_of.push_back(p);
+        }
+      }
+      if (group.size() > 1) {
+        for (const auto& [f, g] : intersecting_triangle_pairs(mesh)) {
+          isolate(pieces_[piece_of[f]], pieces_[piece_of[g]], revert);
+        }
+      }
+      parts.push_back(
+          Part{std::move(mesh),
+               group.size() == 1
+                   ? pieces_[group[0]].label
+                   : fmt::format("{} tubes joined at {} junctions, from the {}",
+                                 tubes, group.size() - tubes,
+                                 pieces_[group[0]].label)});
+    }
+    if (!revert.empty()) {
+      std::sort(revert.begin(), revert.end());
+      revert.erase(std::unique(revert.begin(), revert.end()), revert.end());
+      return revert;
+    }
+    set_.parts = std::move(parts);
+    return {};
+  }
+
+  // Separates two intersecting pieces of one part: a hull is given up; a
+  // tube is cut loose from the hulls at its ends.
+  static void isolate(const Piece& p, const Piece& q,
+                      std::vector<std::int32_t>& revert) {
+    if (p.hull_of >= 0) {
+      revert.push_back(p.hull_of);
+    } else if (q.hull_of >= 0) {
+      revert.push_back(q.hull_of);
+    } else if (!p.attached.empty()) {
+      revert.insert(revert.end(), p.attached.begin(), p.attached.end());
+    } else {
+      revert.insert(revert.end(), q.attached.begin(), q.attached.end());
+    }
   }
 
   // A UV sphere whose faces all lie farther than `radius` from the centre,
@@ -480,11 +999,17 @@ class PartBuilder {
     set_.parts.push_back(
         Part{std::move(mesh), fmt::format("leaf plate of polygon {}", index)});
     ++set_.plates;
-    // Fuse the plate to the segment it grows from.
+    // A plate that starts on its stem's axis, where the stem goes on, cuts
+    // through the tube and fuses with it in the union. At a tip the plate
+    // would meet the tube's cap face on: a joint encloses that corner.
     if (polygon.parent >= 0) {
       const lsys::Segment& stem = seg(polygon.parent);
       const double stem_radius = node_radius(polygon.parent);
-      if (glm::length(polygon.points.front() - stem.p1) <= stem_radius) {
+      const double from_end = glm::length(polygon.points.front() - stem.p1);
+      const auto i = static_cast<std::size_t>(polygon.parent);
+      const bool goes_on = continuation_[i] >= 0 || end_junction_[i] >= 0;
+      if (from_end <= stem_radius &&
+          !(goes_on && from_end <= kOnAxis * stem_radius)) {
         add_joint(stem.p1, std::max(stem_radius, 0.75 * thickness));
       }
     }
@@ -572,7 +1097,17 @@ class PartBuilder {
   PartOptions options_;
   std::vector<std::int32_t> continuation_;
   std::vector<bool> is_continuation_;
+  std::vector<Junction> junctions_;
+  std::vector<std::int32_t> start_junction_;  // per segment, or -1
+  std::vector<std::int32_t> end_junction_;    // per segment, or -1
+  // Per segment: the junction whose incoming ring lies in it, or -1.
+  std::vector<std::int32_t> incoming_ring_;
   RunGrid run_{skeleton_};
+  // One round's meshing.
+  std::vector<glm::dvec3> pool_;  // the vertices of all pieces
+  std::vector<Piece> pieces_;
+  std::vector<std::vector<Ring>> rings_;  // per junction
+  std::vector<std::int32_t> hull_piece_;  // per junction, or -1
   std::vector<Joint> joints_;  // in order of creation, for reproducibility
   std::unordered_map<NodeKey, std::size_t, NodeKeyHash> joint_index_;
   PartSet set_;

@@ -46,6 +46,7 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
                               {.wall_mm = options.print.wall_mm,
                                .tolerance_mm = options.print.tolerance_mm});
   report.tubes = parts.tubes;
+  report.junctions = parts.junctions;
   report.joints = parts.joints;
   report.plates = parts.plates;
   report.skipped_polygons = parts.skipped_polygons;
@@ -63,6 +64,7 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   if (options.unite) {
     solid.mesh = round_and_repair(solid.mesh, options.float_coordinates,
                                   report.rounding);
+    report.cavities_filled += remove_cavities(solid.mesh);
   } else if (options.float_coordinates) {
     solid.mesh = round_to_float(solid.mesh);
   }

@@ -54,6 +54,21 @@ TEST(Boolean, JoinsPartsWithDisjointBoxesWithoutABoolean) {
   expect_printable(u.mesh, 2);
 }
 
+TEST(Boolean, UnitesPartsThatDoNotMeetEachOtherInOneBoolean) {
+  // Four cubes on a bar: their boxes are disjoint, so they form one layer,
+  // and one union takes them all in.
+  std::vector<Part> parts{{box_mesh({0, 0, 0}, {10, 1, 1}), "bar"}};
+  for (int i = 0; i < 4; ++i) {
+    const double x = 0.5 + 2.5 * i;
+    parts.push_back({box_mesh({x, -1, 0.5}, {x + 1, 2, 2}), "cube"});
+  }
+  const UnionResult u = union_parts(std::move(parts));
+  expect_printable(u.mesh);
+  EXPECT_EQ(u.stats.booleans, 1U);
+  EXPECT_EQ(u.stats.concatenations, 3U);
+  EXPECT_NEAR(signed_volume(u.mesh), 10.0 + 4 * (4.5 - 0.5), 1e-9);
+}
+
 TEST(Boolean, CrossingFrustaAgreeWithAnIndependentVolume) {
   lsys::Skeleton s;
   s.segments = {segment({-10, 0, 0}, {10, 0, 0}, 6, 4),

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "lsolid/boolean.hpp"
 #include "support/mesh_checks.hpp"
 
 namespace lsolid {
@@ -59,17 +60,58 @@ TEST(Parts, BreaksChainsAtTurnBacksAndJoinsThem) {
   for (const Part& p : parts.parts) expect_printable(p.mesh);
 }
 
-TEST(Parts, PutsAJointWhereABranchLeavesItsParent) {
+TEST(Parts, JoinsABranchToItsParentWithTheHullOfTheirRings) {
   lsys::Skeleton s;
   s.segments = {segment({0, 0, 0}, {0, 0, 10}, 2),
-                segment({0, 0, 10}, {5, 0, 15}, 1, 0),   // branch
-                segment({0, 0, 10}, {0, 0, 20}, 2, 0)};  // main axis continues
+                segment({0, 0, 10}, {7, 0, 17}, 1, 0),   // branch, 45°
+                segment({0, 0, 10}, {0, 0, 20}, 2, 0)};  // main axis goes on
+  const PartSet parts = build_parts(s, {.tolerance_mm = 0.05});
+  EXPECT_EQ(parts.tubes, 3U);
+  EXPECT_EQ(parts.junctions, 1U);
+  EXPECT_EQ(parts.joints, 0U);
+  // One closed part, no boolean needed: the tubes end in rings that are
+  // faces of the junction's convex hull.
+  ASSERT_EQ(parts.parts.size(), 1U);
+  expect_printable(parts.parts[0].mesh);
+  // The main axis whole, the branch outside it, and the hull's web in the
+  // fork, which fills at most the branch's ring distance again.
+  const double main_axis = polygon_area(tube_sides(1.0, 0.05), 1.0) * 20.0;
+  const double branch =
+      polygon_area(tube_sides(0.5, 0.05), 0.5) *
+      (std::sqrt(98.0) - 1.0 / std::sin(std::numbers::pi / 4));
+  const double v = signed_volume(parts.parts[0].mesh);
+  EXPECT_GT(v, main_axis + 0.98 * branch);
+  EXPECT_LT(v, main_axis + branch + 4.0);
+}
+
+TEST(Parts, LeavesAJunctionToTheUnionWhereRingsDoNotFit) {
+  lsys::Skeleton s;
+  s.segments = {segment({0, 0, 0}, {0, 0, 10}, 2),
+                segment({0, 0, 10}, {0.5, 0, 10.5}, 1, 0),  // a short branch
+                segment({0, 0, 10}, {0, 0, 20}, 2, 0)};
   const PartSet parts = build_parts(s);
   EXPECT_EQ(parts.tubes, 2U);
+  EXPECT_EQ(parts.junctions, 0U);
   EXPECT_EQ(parts.joints, 1U);
   // The main axis stays one tube: the joint's sphere encloses the branch's cap.
   EXPECT_NE(parts.parts[0].label.find("segments 0-2"), std::string::npos);
   for (const Part& p : parts.parts) expect_printable(p.mesh);
+}
+
+TEST(Parts, GivesUpJunctionsWhoseBranchesRunIntoTheTree) {
+  lsys::Skeleton s;
+  // A branch that bends back across the trunk above its fork.
+  s.segments = {segment({0, 0, 0}, {0, 0, 10}, 2),
+                segment({0, 0, 10}, {0, 0, 30}, 2, 0),
+                segment({0, 0, 10}, {6, 0, 16}, 1, 0),
+                segment({6, 0, 16}, {-4, 0, 24}, 1, 2)};
+  const PartSet parts = build_parts(s);
+  EXPECT_EQ(parts.tubes, 2U);
+  EXPECT_EQ(parts.junctions, 0U);
+  EXPECT_EQ(parts.joints, 1U);
+  // Each part is a valid operand for the union; the union is one shell.
+  for (const Part& p : parts.parts) expect_printable(p.mesh);
+  expect_printable(union_parts(parts.parts).mesh);
 }
 
 TEST(Parts, ThickensPolygonsIntoPlatesOfWallThickness) {
@@ -114,7 +156,7 @@ TEST(Parts, SkipsPolygonsWithoutArea) {
   EXPECT_EQ(build_parts(s).skipped_polygons, 1U);
 }
 
-TEST(Parts, FusesALeafToItsStemWithAJoint) {
+TEST(Parts, FusesALeafAtATipWithAJoint) {
   lsys::Skeleton s;
   s.segments = {segment({0, 0, 0}, {0, 0, 10}, 1)};
   lsys::Polygon leaf;
@@ -124,6 +166,21 @@ TEST(Parts, FusesALeafToItsStemWithAJoint) {
   const PartSet parts = build_parts(s);
   EXPECT_EQ(parts.joints, 1U);
   EXPECT_EQ(parts.plates, 1U);
+  expect_printable(union_parts(parts.parts).mesh);
+}
+
+TEST(Parts, LetsALeafCutThroughAStemThatGoesOn) {
+  lsys::Skeleton s;
+  s.segments = {segment({0, 0, 0}, {0, 0, 10}, 1),
+                segment({0, 0, 10}, {0, 0, 20}, 1, 0)};
+  lsys::Polygon leaf;
+  leaf.points = {{0, 0, 10}, {3, 0, 12}, {0, 0, 15}, {-3, 0, 12}};
+  leaf.parent = 0;
+  s.polygons = {leaf};
+  const PartSet parts = build_parts(s, {.wall_mm = 0.8});
+  EXPECT_EQ(parts.joints, 0U);
+  EXPECT_EQ(parts.plates, 1U);
+  expect_printable(union_parts(parts.parts).mesh);
 }
 
 }  // namespace

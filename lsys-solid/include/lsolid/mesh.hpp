@@ -41,7 +41,9 @@ void remove_unused_vertices(TriangleMesh& mesh);
 
 /// Removes the shells that enclose negative volume: sealed cavities that a
 /// union leaves where parts surround empty space. Filling them changes no
-/// outer surface. Returns how many were removed.
+/// outer surface. Shells without volume (under 10⁻¹² mm³, such as a tiny
+/// cavity that rounding flattened) are removed too. Returns how many were
+/// removed.
 /// @pre the mesh is closed and consistently oriented.
 std::size_t remove_cavities(TriangleMesh& mesh);
 

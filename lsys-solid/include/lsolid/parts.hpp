@@ -27,6 +27,10 @@ struct PartOptions {
 struct PartSet {
   std::vector<Part> parts;
   std::size_t tubes = 0;
+  /// Branch points meshed directly: the convex hull of the rings of the
+  /// tubes that meet there, stitched to them (no boolean needed).
+  std::size_t junctions = 0;
+  /// Joint spheres, where a junction is left to the union.
   std::size_t joints = 0;
   std::size_t plates = 0;
   /// Polygons without area or whose outline crosses itself: not printed.
@@ -35,10 +39,13 @@ struct PartSet {
 
 /// Meshes a millimetre skeleton (see scale_to_print) into parts whose union
 /// is the model: one swept tube per unbranched chain of segments, with
-/// mitred bends and shared rings; a joint solid wherever chains meet or a
-/// chain breaks at a sharp bend, enclosing the tubes' end caps; and a plate
-/// of wall thickness for each polygon, fused by a joint to the segment it
-/// grows from.
+/// mitred bends and shared rings. Where branches meet at angles that leave
+/// room, the tubes end in rings and the convex hull of the rings joins them
+/// (B-Mesh), so that a whole tree can be one closed part; each such part is
+/// checked not to cut itself, and junctions are given up until none does.
+/// Elsewhere a joint sphere encloses the tubes' end caps for the union to
+/// merge. Each polygon becomes a plate of wall thickness, fused by a joint
+/// to the segment it grows from.
 [[nodiscard]] PartSet build_parts(const lsys::Skeleton& skeleton,
                                   const PartOptions& options = {});
 

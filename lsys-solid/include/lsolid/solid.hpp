@@ -40,6 +40,7 @@ struct SolidReport {
   std::size_t segments = 0;
   std::size_t polygons = 0;
   std::size_t tubes = 0;
+  std::size_t junctions = 0;  ///< branch points meshed directly
   std::size_t joints = 0;
   std::size_t plates = 0;
   std::size_t skipped_polygons = 0;

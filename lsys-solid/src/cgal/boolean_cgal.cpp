@@ -75,70 +75,86 @@ std::uint32_t morton(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
 
 // The vertices a union created are lazy exact points whose exact values
 // (rationals) grow with every level of the reduction; most of the union's
-// time went into GMP for them. Where rounding them to doubles provably keeps
-// the mesh valid (no face near them becomes degenerate or intersecting,
-// tested with exact predicates on the rounded coordinates), they are
-// rounded, and the next union starts from doubles again. Where it would not,
-// the exact points stay. Returns true if the points were rounded.
-bool round_new_points(ExactMesh& mesh) {
-  using Face = InexactMesh::Face_index;
-  std::vector<bool> is_new(mesh.number_of_vertices(), false);
-  bool any = false;
+// time went into GMP for them. Each is rounded to doubles unless that makes
+// a face near it degenerate or makes two faces intersect, tested with exact
+// predicates on the rounded coordinates; the vertices of offending faces get
+// their exact points back, and the test is repeated until it passes (at
+// worst with every exact point back). So one bad spot in a large operand
+// does not keep all its new points exact. Returns the number of points
+// left exact.
+std::size_t round_new_points(ExactMesh& mesh) {
+  using Vertex = ExactMesh::Vertex_index;
+  using Face = ExactMesh::Face_index;
+  std::vector<Vertex> fresh;
   for (const auto v : mesh.vertices()) {
     const auto& a = CGAL::approx(mesh.point(v));
-    if (!a.x().is_point() || !a.y().is_point() || !a.z().is_point()) {
-      is_new[static_cast<std::size_t>(v)] = true;
-      any = true;
-    }
+    if (!a.x().is_point() || !a.y().is_point() || !a.z().is_point())
+      fresh.push_back(v);
   }
-  if (!any) return false;
-  InexactMesh rounded;
-  rounded.reserve(mesh.number_of_vertices(), mesh.number_of_edges(),
-                  mesh.number_of_faces());
-  for (const auto v : mesh.vertices()) {
-    const Exact::Point_3& p = mesh.point(v);
-    rounded.add_vertex(Inexact::Point_3(CGAL::to_double(p.x()),
-                                        CGAL::to_double(p.y()),
-                                        CGAL::to_double(p.z())));
-  }
-  std::vector<Face> near_new;
-  for (const auto f : mesh.faces()) {
-    std::array<InexactMesh::Vertex_index, 3> corners;
-    std::size_t k = 0;
-    bool touches_new = false;
-    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
-      corners[k++] = InexactMesh::Vertex_index(static_cast<std::uint32_t>(v));
-      touches_new = touches_new || is_new[static_cast<std::size_t>(v)];
-    }
-    const Face g = rounded.add_face(corners[0], corners[1], corners[2]);
-    if (g == InexactMesh::null_face()) return false;
-    if (touches_new) {
-      if (PMP::is_degenerate_triangle_face(g, rounded)) return false;
-      near_new.push_back(g);
-    }
-  }
-  // Faces whose boxes meet a changed face: the only ones it can now cut.
-  using FaceBox = CGAL::Box_intersection_d::Box_with_info_d<double, 3, Face>;
-  std::vector<FaceBox> changed_boxes;
+  if (fresh.empty()) return 0;
+  // Boxes of the exact faces, which hold the rounded faces too (the double
+  // nearest to a value lies within any interval of doubles around it).
+  using FaceBox = CGAL::Box_intersection_d::Box_with_info_d<
+      double, 3, Face, CGAL::Box_intersection_d::ID_EXPLICIT>;
   std::vector<FaceBox> all_boxes;
-  for (const Face f : near_new)
-    changed_boxes.emplace_back(PMP::face_bbox(f, rounded), f);
-  for (const Face f : rounded.faces())
-    all_boxes.emplace_back(PMP::face_bbox(f, rounded), f);
-  std::set<Face> range(near_new.begin(), near_new.end());
-  CGAL::box_intersection_d(changed_boxes.begin(), changed_boxes.end(),
-                           all_boxes.begin(), all_boxes.end(),
-                           [&](const FaceBox&, const FaceBox& other) {
-                             range.insert(other.info());
-                           });
-  if (PMP::does_self_intersect(range, rounded)) return false;
-  for (const auto v : mesh.vertices()) {
-    if (!is_new[static_cast<std::size_t>(v)]) continue;
-    const Inexact::Point_3& p =
-        rounded.point(InexactMesh::Vertex_index(static_cast<std::uint32_t>(v)));
-    mesh.point(v) = Exact::Point_3(p.x(), p.y(), p.z());
+  all_boxes.reserve(mesh.number_of_faces());
+  for (const Face f : mesh.faces())
+    all_boxes.emplace_back(PMP::face_bbox(f, mesh), f);
+  std::unordered_map<std::uint32_t, Exact::Point_3> exact;
+  for (const Vertex v : fresh) {
+    const Exact::Point_3 p = mesh.point(v);
+    exact.emplace(static_cast<std::uint32_t>(v), p);
+    mesh.point(v) = Exact::Point_3(
+        CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
   }
-  return true;
+  std::set<Vertex> rounded(fresh.begin(), fresh.end());
+  while (!rounded.empty()) {
+    std::set<Face> near;
+    for (const Vertex v : rounded) {
+      for (const Face f : CGAL::faces_around_target(mesh.halfedge(v), mesh)) {
+        if (f != ExactMesh::null_face()) near.insert(f);
+      }
+    }
+    std::set<Face> problems;
+    for (const Face f : near) {
+      if (PMP::is_degenerate_triangle_face(f, mesh)) problems.insert(f);
+    }
+    // Faces whose boxes meet a changed face: the only ones it can now cut.
+    std::vector<FaceBox> changed_boxes;
+    for (const Face f : near)
+      changed_boxes.emplace_back(PMP::face_bbox(f, mesh), f);
+    std::set<Face> range(near.begin(), near.end());
+    CGAL::box_intersection_d(changed_boxes.begin(), changed_boxes.end(),
+                             all_boxes.begin(), all_boxes.end(),
+                             [&](const FaceBox&, const FaceBox& other) {
+                               range.insert(other.info());
+                             });
+    if (problems.empty()) {
+      std::vector<std::pair<Face, Face>> pairs;
+      PMP::self_intersections(range, mesh, std::back_inserter(pairs));
+      for (const auto& [f, g] : pairs) {
+        problems.insert(f);
+        problems.insert(g);
+      }
+    }
+    if (problems.empty()) break;
+    bool restored = false;
+    for (const Face f : problems) {
+      for (const Vertex v :
+           CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+        if (rounded.erase(v) > 0) {
+          mesh.point(v) = exact.at(static_cast<std::uint32_t>(v));
+          restored = true;
+        }
+      }
+    }
+    if (!restored) {  // the problem is not the rounding's: undo it all
+      for (const Vertex v : rounded)
+        mesh.point(v) = exact.at(static_cast<std::uint32_t>(v));
+      rounded.clear();
+    }
+  }
+  return fresh.size() - rounded.size();
 }
 
 void translate(ExactMesh& mesh, const Exact::Vector_3& by) {
@@ -152,32 +168,60 @@ class Unioner {
   UnionResult run() {
     if (parts_.empty())
       throw GeometryError("nothing to unite: there are no parts");
-    std::vector<Group> level = initial_groups();
-    while (level.size() > 1) {
-      std::vector<Group> next;
-      next.reserve((level.size() + 1) / 2);
-      for (std::size_t i = 0; i + 1 < level.size(); i += 2) {
-        next.push_back(merge(std::move(level[i]), std::move(level[i + 1])));
-      }
-      if (level.size() % 2 == 1) next.push_back(std::move(level.back()));
-      level = std::move(next);
+    std::vector<Group> groups = initial_groups();
+    // The two smallest groups first, so that the large ones take part in
+    // few unions: a union costs time in proportion to both operands' sizes,
+    // not only to where they meet.
+    const auto larger = [](const Group& a, const Group& b) {
+      return a.mesh.number_of_faces() > b.mesh.number_of_faces();
+    };
+    std::make_heap(groups.begin(), groups.end(), larger);
+    while (groups.size() > 1) {
+      std::pop_heap(groups.begin(), groups.end(), larger);
+      Group a = std::move(groups.back());
+      groups.pop_back();
+      std::pop_heap(groups.begin(), groups.end(), larger);
+      Group b = std::move(groups.back());
+      // The last union's new points are rounded with the whole mesh, by
+      // round_and_repair.
+      const bool last = groups.size() == 1;
+      groups.back() = merge(std::move(a), std::move(b), !last);
+      std::push_heap(groups.begin(), groups.end(), larger);
     }
     UnionResult result;
     result.stats = stats_;
-    result.mesh = to_triangle_mesh(level.front().mesh);
+    result.mesh = to_triangle_mesh(groups.front().mesh);
     return result;
   }
 
  private:
+  // Parts whose boxes meet go to different layers; each layer is the
+  // concatenation of its parts, a valid operand since they are disjoint.
+  // So a union takes in many parts at once, and the number of unions is
+  // about the number of layers, not of parts (as Manifold's BatchBoolean
+  // batches). Layers are filled greedily in Z-order of the parts' boxes.
   std::vector<Group> initial_groups() {
-    Box all;
     std::vector<CGAL::Bbox_3> boxes;
+    boxes.reserve(parts_.size());
+    Box all;
     for (const Part& part : parts_) {
       boxes.push_back(box_of(part.mesh));
       const Box b = bounds(part.mesh);
       all.min = glm::min(all.min, b.min);
       all.max = glm::max(all.max, b.max);
     }
+    using PartBox = CGAL::Box_intersection_d::Box_with_info_d<
+        double, 3, std::size_t, CGAL::Box_intersection_d::ID_EXPLICIT>;
+    std::vector<PartBox> part_boxes;
+    part_boxes.reserve(parts_.size());
+    for (std::size_t i = 0; i < parts_.size(); ++i)
+      part_boxes.emplace_back(boxes[i], i);
+    std::vector<std::vector<std::size_t>> neighbours(parts_.size());
+    CGAL::box_self_intersection_d(part_boxes.begin(), part_boxes.end(),
+                                  [&](const PartBox& a, const PartBox& b) {
+                                    neighbours[a.info()].push_back(b.info());
+                                    neighbours[b.info()].push_back(a.info());
+                                  });
     const glm::dvec3 span = glm::max(all.size(), glm::dvec3(1e-9));
     std::vector<std::pair<std::uint32_t, std::size_t>> order;
     for (std::size_t i = 0; i < parts_.size(); ++i) {
@@ -192,13 +236,28 @@ class Unioner {
                          i);
     }
     std::sort(order.begin(), order.end());
+    std::vector<int> layer(parts_.size(), -1);
     std::vector<Group> groups;
-    groups.reserve(parts_.size());
     for (const auto& [code, i] : order) {
       (void)code;
       check_part(i);
-      groups.push_back(
-          Group{to_surface_mesh<ExactMesh>(parts_[i].mesh), boxes[i], {i}});
+      std::vector<bool> taken(groups.size(), false);
+      for (const std::size_t n : neighbours[i]) {
+        if (layer[n] >= 0) taken[static_cast<std::size_t>(layer[n])] = true;
+      }
+      const auto free = static_cast<std::size_t>(
+          std::find(taken.begin(), taken.end(), false) - taken.begin());
+      layer[i] = static_cast<int>(free);
+      ExactMesh mesh = to_surface_mesh<ExactMesh>(parts_[i].mesh);
+      if (free == groups.size()) {
+        groups.push_back(Group{std::move(mesh), boxes[i], {i}});
+      } else {
+        Group& g = groups[free];
+        g.mesh.join(mesh);
+        g.box += boxes[i];
+        g.parts.push_back(i);
+        ++stats_.concatenations;
+      }
     }
     return groups;
   }
@@ -214,7 +273,7 @@ class Unioner {
     }
   }
 
-  Group merge(Group a, Group b) {
+  Group merge(Group a, Group b, bool round_points) {
     if (!CGAL::do_overlap(a.box, b.box)) {
       a.mesh.join(b.mesh);
       a.box += b.box;
@@ -248,7 +307,7 @@ class Unioner {
         last_failure_ = "the parts touch at a point";
       }
       if (!ok) continue;
-      if (round_new_points(out)) ++stats_.rounded;
+      if (round_points && round_new_points(out) == 0) ++stats_.rounded;
       ++stats_.booleans;
       a.mesh = std::move(out);
       a.box += b.box;

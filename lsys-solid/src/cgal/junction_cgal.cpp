@@ -1,0 +1,82 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// The two CGAL queries of the part builder: the convex hull that joins the
+// tube rings at a branch point (as B-Mesh, Ji et al. 2010, and SQM, Bærentzen
+// et al. 2012, build their junctions), and the exact self-intersection test
+// that decides whether pieces stitched at their rings may stay one operand of
+// the union. Both use exact predicates on the doubles given (EPICK).
+// Preconditions stay on, as exceptions (see boolean_cgal.cpp).
+#undef NDEBUG
+#define CGAL_NO_ASSERTIONS
+#define CGAL_NO_POSTCONDITIONS
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/convex_hull_3.h>
+
+#include <map>
+
+#include "conversion.hpp"
+#include "junction_geometry.hpp"
+#include "lsolid/errors.hpp"
+
+namespace lsolid {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Mesh = CGAL::Surface_mesh<Point>;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+}  // namespace
+
+std::vector<std::array<std::uint32_t, 3>> convex_hull_triangles(
+    const std::vector<glm::dvec3>& points) {
+  std::vector<Point> input;
+  input.reserve(points.size());
+  // The hull copies the coordinates exactly; they lead back to the indices.
+  std::map<std::array<double, 3>, std::uint32_t> index;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const glm::dvec3& p = points[i];
+    input.emplace_back(p.x, p.y, p.z);
+    index.emplace(std::array<double, 3>{p.x, p.y, p.z},
+                  static_cast<std::uint32_t>(i));
+  }
+  Mesh hull;
+  CGAL::convex_hull_3(input.begin(), input.end(), hull);
+  std::vector<std::array<std::uint32_t, 3>> out;
+  if (hull.number_of_faces() < 4) return out;
+  for (const auto f : hull.faces()) {
+    std::array<std::uint32_t, 3> t{};
+    std::size_t k = 0;
+    for (const auto v : CGAL::vertices_around_face(hull.halfedge(f), hull)) {
+      if (k == 3) return {};  // convex_hull_3 triangulates; never a polygon
+      const Point& p = hull.point(v);
+      t[k++] = index.at({p.x(), p.y(), p.z()});
+    }
+    out.push_back(t);
+  }
+  return out;
+}
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>>
+intersecting_triangle_pairs(const TriangleMesh& mesh) {
+  const Mesh sm = to_surface_mesh<Mesh>(mesh);
+  if (sm.number_of_faces() != mesh.triangles.size()) {
+    throw GeometryError("stitched parts do not form an oriented surface");
+  }
+  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
+  PMP::self_intersections(sm, std::back_inserter(pairs));
+  // to_surface_mesh adds the faces in order, so their indices are the
+  // triangles' indices.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
+  out.reserve(pairs.size());
+  for (const auto& [f, g] : pairs) {
+    out.emplace_back(static_cast<std::uint32_t>(f),
+                     static_cast<std::uint32_t>(g));
+  }
+  return out;
+}
+
+}  // namespace lsolid

@@ -13,9 +13,12 @@ namespace lsolid {
 /// What the union did.
 struct UnionStats {
   std::size_t booleans = 0;        ///< corefinement unions computed
-  std::size_t concatenations = 0;  ///< pairs with disjoint boxes, joined
+  /// Parts added to a layer of parts with disjoint boxes, and pairs of
+  /// groups with disjoint boxes: joined without a boolean.
+  std::size_t concatenations = 0;
   std::size_t retries = 0;         ///< unions retried after a perturbation
-  /// Unions whose new vertices could be rounded to doubles (see design.md).
+  /// Unions whose new vertices could all be rounded to doubles before the
+  /// next union (see design.md).
   std::size_t rounded = 0;
 };
 
@@ -26,11 +29,13 @@ struct UnionResult {
 };
 
 /// Unions closed parts into one closed 2-manifold mesh with CGAL's
-/// corefinement over exact constructions (Epeck), in a balanced pairing of
-/// parts in Z-order of their boxes, so that neighbours meet first; pairs
-/// whose boxes do not overlap are joined without a boolean. A pair that
-/// fails is retried after translating one operand by 10⁻⁵ mm, twice.
-/// The result is rounded to doubles once, at the end.
+/// corefinement over exact constructions (Epeck). Parts whose boxes do not
+/// meet are batched into layers (concatenated, no boolean), filled greedily
+/// in Z-order of their boxes; the layers are united smallest first, and
+/// pairs whose boxes do not overlap are joined without a boolean. A union
+/// that fails is retried after translating one operand by 10⁻⁵ mm, twice.
+/// New points are rounded to doubles between unions where that keeps the
+/// mesh valid; the result is rounded to doubles at the end.
 /// @pre every part is closed and outward-oriented.
 /// @throws GeometryError naming the parts when a part is not a valid solid
 ///   or a union still fails.

@@ -6,6 +6,9 @@
 // mirrored, which a symmetric tree does not show.
 // test: n = 3 (the full model, n = 6, is built by 'make gallery', not in CI)
 // expect: segments 369, polygons 728
+// Print settings: 100 mm on the longest side, walls of 0.8 mm.
+size: 100mm
+wall: 0.8mm
 aliases:
   f = F   /* create branch */
   v = &   /* pitch down */

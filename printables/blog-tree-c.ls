@@ -2,6 +2,9 @@
 // blog's own symbols and setting names, plus an alias block.
 // test: n = 7 (the full model, n = 13, is built by 'make gallery', not in CI)
 // expect: segments 2186, polygons 0
+// Print settings: 100 mm on the longest side, walls of 0.8 mm.
+size: 100mm
+wall: 0.8mm
 aliases:
   f = F   /* create branch */
   v = &   /* pitch down */

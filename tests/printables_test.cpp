@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "lsolid/print_settings.hpp"
 #include "lsys/interpretation.hpp"
 #include "lsys/parser.hpp"
 #include "lsys/source.hpp"
@@ -61,7 +62,16 @@ TEST_P(Printable, DerivesTheStatedSkeleton) {
   ASSERT_TRUE(source->text().starts_with("//"))
       << "each printable starts with a comment naming its source";
   const Expectation expected = expectation(source->text());
-  const lsys::Grammar grammar = lsys::parse_grammar(source);
+  const lsys::Grammar grammar = lsys::parse_grammar(
+      source, {.extra_settings = lsolid::print_setting_names()});
+  // Each printable carries the settings of a good print.
+  const auto states = [&](const std::string& key) {
+    return std::any_of(
+        grammar.extra_settings.begin(), grammar.extra_settings.end(),
+        [&](const lsys::ExtraSetting& s) { return s.key == key; });
+  };
+  EXPECT_TRUE(states("size"));
+  EXPECT_TRUE(states("wall"));
   const lsys::Skeleton skeleton = lsys::interpret(grammar);
   EXPECT_EQ(skeleton.segments.size(), expected.segments);
   EXPECT_EQ(skeleton.polygons.size(), expected.polygons);

@@ -8,6 +8,7 @@
 #include "commands.hpp"
 #include "lsolid/errors.hpp"
 #include "lsolid/mesh_io.hpp"
+#include "lsolid/preview.hpp"
 #include "lsolid/solid.hpp"
 #include "lsys/diagnostic.hpp"
 
@@ -81,6 +82,13 @@ int run_build(const BuildCommand& command) {
         .message = "unknown output format '" + output.extension().string() +
                    "': use .stl or .off"});
   }
+  const std::filesystem::path preview = command.preview;
+  if (!preview.empty() && preview.extension() != ".png") {
+    throw lsys::ParseError(lsys::Diagnostic{
+        .file = "--preview",
+        .message = "a preview is a PNG: name it FILE.png, not '" +
+                   preview.string() + "'"});
+  }
   const lsys::Grammar grammar = load_grammar(command.input);
   SolidOptions options;
   options.derivation = derivation_options(command.input);
@@ -101,6 +109,10 @@ int run_build(const BuildCommand& command) {
   fmt::print(
       "wrote {}{}\n", output.string(),
       options.unite ? "" : " (overlapping parts, not united: --no-union)");
+  if (!preview.empty()) {
+    write_png(render_preview(solid.mesh), preview);
+    fmt::print("rendered {}\n", preview.string());
+  }
   std::fflush(stdout);
   return 0;
 }

@@ -84,6 +84,7 @@ struct BuildCommand {
   std::string output;  ///< empty: FILE with .stl beside the input
   bool ascii = false;
   bool no_union = false;
+  std::string preview;  ///< a PNG to render the written mesh to, or empty
 };
 /// Returns the exit code (3 when the mesh is not printable).
 /// @throws lsys::ParseError, GeometryError, IoError.

@@ -22,6 +22,7 @@ Examples:
   lsolid printables/abop-1.25-bush.ls --wall 0.8mm -o bush.stl
   lsolid printables/hilbert-cube.ls --size 60mm
   lsolid check bush.stl
+  lsolid printables/abop-1.25-bush.ls -n 5 --preview bush.png
   lsolid derive printables/hilbert-cube.ls -n 2
   lsolid derive printables/abop-1.25-bush.ls --stats
   lsolid skeleton printables/honda-2.1a.ls --json
@@ -43,6 +44,8 @@ int main(int argc, char** argv) {
   app.add_option("-o,--output", build.output,
                  "output file: .stl (binary) or .off; default FILE.stl");
   app.add_flag("--ascii", build.ascii, "write ASCII STL");
+  app.add_option("--preview", build.preview,
+                 "also render the mesh, shaded, to this PNG (offscreen)");
   app.add_flag("--no-union", build.no_union,
                "write the overlapping parts without uniting them (debugging)");
   lsolid::cli::add_print_options(app, build.print);

@@ -150,6 +150,21 @@ TEST_F(Build, WritesBesideTheInputByDefaultAndTakesOff) {
   EXPECT_EQ(read_text(dir_ / "a.stl").substr(0, 12), "solid lsolid");
 }
 
+TEST_F(Build, RendersAPreviewBesideTheMesh) {
+  std::filesystem::copy_file(kSource / "printables/branches-90.ls",
+                             dir_ / "b.ls");
+  const auto r = run_command(lsolid() + " b.ls --preview b.png", dir_);
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("rendered b.png\n"), std::string::npos);
+  EXPECT_EQ(read_text(dir_ / "b.png").substr(0, 8), "\x89PNG\r\n\x1a\n");
+  const auto bad = run_command(lsolid() + " b.ls --preview b.jpg", dir_);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_EQ(bad.err,
+            "--preview: error: a preview is a PNG: name it FILE.png, not "
+            "'b.jpg'\n");
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "b.jpg"));
+}
+
 TEST_F(Build, LeavesNothingBehindOnBadInput) {
   { std::ofstream(dir_ / "bad.ls") << "\u03C9: F\nF \u2192 F]\n"; }
   { std::ofstream(dir_ / "old.stl") << "keep me"; }

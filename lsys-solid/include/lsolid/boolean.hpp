@@ -12,11 +12,11 @@ namespace lsolid {
 
 /// What the union did.
 struct UnionStats {
-  std::size_t booleans = 0;        ///< corefinement unions computed
+  std::size_t booleans = 0;  ///< corefinement unions computed
   /// Parts added to a layer of parts with disjoint boxes, and pairs of
   /// groups with disjoint boxes: joined without a boolean.
   std::size_t concatenations = 0;
-  std::size_t retries = 0;         ///< unions retried after a perturbation
+  std::size_t retries = 0;  ///< unions retried after a perturbation
   /// Unions whose new vertices could all be rounded to doubles before the
   /// next union (see design.md).
   std::size_t rounded = 0;

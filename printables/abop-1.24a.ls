@@ -2,9 +2,11 @@
 // A planar figure: it lies in the XZ plane, as ABOP draws it seen from the front.
 // test: n = 3 (the full model, n = 5, is built by 'make gallery', not in CI)
 // expect: segments 3125, polygons 0
-// Print settings: 100 mm on the longest side, walls of 0.8 mm.
+// Print settings: 100 mm on the longest side, walls of 0.8 mm,
+// and a disc under it where it would tip over.
 size: 100mm
 wall: 0.8mm
+base: auto
 n=5, δ=25.7°
 width: 1
 F

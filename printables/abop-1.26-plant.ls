@@ -4,9 +4,11 @@
 // second slide prints &&& (its first prints &&&&).
 // test: n = 3 (the full model, n = 5, is built by 'make gallery', not in CI)
 // expect: segments 533, polygons 327
-// Print settings: 100 mm on the longest side, walls of 0.8 mm.
+// Print settings: 100 mm on the longest side, walls of 0.8 mm,
+// and a disc under it where it would tip over.
 size: 100mm
 wall: 0.8mm
+base: auto
 n=5, δ=18°
 width: 0.15
 ω : plant

@@ -3,9 +3,11 @@
 // breaks its second rule over a line; here it stands on one.
 // test: n = 5 (the full model, n = 10, is built by 'make gallery', not in CI)
 // expect: segments 2037, polygons 2046
-// Print settings: 100 mm on the longest side, walls of 0.8 mm.
+// Print settings: 100 mm on the longest side, walls of 0.8 mm,
+// and a disc under it where it would tip over.
 size: 100mm
 wall: 0.8mm
+base: auto
 aliases:
   f = F   /* create branch */
   v = &   /* pitch down */

@@ -2,9 +2,11 @@
 // blog's own symbols and setting names, plus an alias block.
 // test: n = 7 (the full model, n = 13, is built by 'make gallery', not in CI)
 // expect: segments 2186, polygons 0
-// Print settings: 100 mm on the longest side, walls of 0.8 mm.
+// Print settings: 100 mm on the longest side, walls of 0.8 mm,
+// and a disc under it where it would tip over.
 size: 100mm
 wall: 0.8mm
+base: auto
 aliases:
   f = F   /* create branch */
   v = &   /* pitch down */

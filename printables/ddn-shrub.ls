@@ -4,9 +4,11 @@
 // As printed, only the first branch of A thins with `!`.
 // test: n = 4 (the full model, n = 7, is built by 'make gallery', not in CI)
 // expect: segments 3891, polygons 1284
-// Print settings: 100 mm on the longest side, walls of 0.8 mm.
+// Print settings: 100 mm on the longest side, walls of 0.8 mm,
+// and a disc under it where it would tip over.
 size: 100mm
 wall: 0.8mm
+base: auto
 n=7, δ=22.5°
 width: 0.3
 width factor: 0.75

@@ -3,9 +3,11 @@
 // Curve"), ABOP fig. 1.19 (p. 20). Order n visits 8^n cells: 8^n - 1 unit
 // segments (63 at n = 2, 511 at n = 3).
 // expect: segments 63, polygons 0
-// Print settings: 60 mm on the longest side, walls of 0.8 mm.
+// Print settings: 60 mm on the longest side, walls of 0.8 mm;
+// it stands on its bottom face.
 size: 60mm
 wall: 0.8mm
+base: none
 n=2, δ=90°
 width: 0.3
 A

@@ -4,9 +4,11 @@
 // 2^10 - 1 = 1023 segments at n = 10.
 // test: n = 7 (the full model, n = 10, is built by 'make gallery', not in CI)
 // expect: segments 1023, polygons 0
-// Print settings: 100 mm on the longest side, walls of 0.8 mm.
+// Print settings: 100 mm on the longest side, walls of 0.8 mm,
+// and a disc under it where it would tip over.
 size: 100mm
 wall: 0.8mm
+base: auto
 #define r1 0.9   /* contraction ratio for the trunk */
 #define r2 0.9   /* contraction ratio for branches */
 #define a0 45    /* branching angle from the trunk */

@@ -2,9 +2,11 @@
 // Houdini's notation, premise and -> arrows.
 // test: n = 4 (the full model, n = 7, is built by 'make gallery', not in CI)
 // expect: segments 4118, polygons 0
-// Print settings: 100 mm on the longest side, walls of 0.8 mm.
+// Print settings: 100 mm on the longest side, walls of 0.8 mm,
+// and a disc under it where it would tip over.
 size: 100mm
 wall: 0.8mm
+base: auto
 n=7, δ=20°
 width: 1
 premise: X

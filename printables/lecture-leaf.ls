@@ -5,9 +5,11 @@
 // base six times and gives a degenerate polygon; here each `.` stands at its
 // ray's tip, inside the brackets, as the last ray (`[-G.]`) already has it.
 // expect: segments 17, polygons 1
-// Print settings: 100 mm on the longest side, walls of 0.8 mm.
+// Print settings: 100 mm on the longest side, walls of 0.8 mm,
+// and a disc under it where it would tip over.
 size: 100mm
 wall: 0.8mm
+base: auto
 n=0, δ=18°
 width: 0.25
 ω: {[++++G.][++GG.][+GGG.][GGGGG.][-GGG.][--GG.][-G.]}

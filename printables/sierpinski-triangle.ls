@@ -4,9 +4,11 @@
 // needs 60° (ABOP fig. 1.10b), which is used here.
 // test: n = 4 (the full model, n = 6, is built by 'make gallery', not in CI)
 // expect: segments 729, polygons 0
-// Print settings: 100 mm on the longest side, walls of 0.8 mm.
+// Print settings: 100 mm on the longest side, walls of 0.8 mm,
+// and a disc under it where it would tip over.
 size: 100mm
 wall: 0.8mm
+base: auto
 n=6, σ=60°
 width: 1
 aliases: A=F B=F

@@ -3,9 +3,11 @@
 // (docs/turtle.md): (x, y, z) in ABOP is (x, -z, y) here.
 // test: n = 3 (the full model, n = 6, is built by 'make gallery', not in CI)
 // expect: segments 1457, polygons 0
-// Print settings: 100 mm on the longest side, walls of 0.8 mm.
+// Print settings: 100 mm on the longest side, walls of 0.8 mm,
+// and a disc under it where it would tip over.
 size: 100mm
 wall: 0.8mm
+base: auto
 #define d1 180  /* divergence angle 1 */
 #define d2 252  /* divergence angle 2 */
 #define a 36    /* branching angle */

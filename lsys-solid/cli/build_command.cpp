@@ -33,6 +33,13 @@ void print_report(const SolidReport& r, bool united) {
         r.union_stats.booleans, r.union_stats.rounded,
         r.union_stats.concatenations, r.union_stats.retries, r.cavities_filled);
   }
+  if (r.placement.has_base) {
+    fmt::print(
+        "base: a disc of {:.1f} mm radius and {:.1f} mm under a foot {:.1f} mm "
+        "wide\n",
+        r.placement.base_radius_mm, r.placement.base_thickness_mm,
+        r.placement.footprint_mm);
+  }
   fmt::print("triangles: {}\n", v.triangles);
   fmt::print("volume: {:.1f} mm³\n", v.volume_mm3);
   const glm::dvec3 size = v.bounds.size();

@@ -28,8 +28,8 @@ struct GrammarInput {
 
 /// Registers FILE, -n, --seed, --define, --max-segments, --max-modules and
 /// (with `with_roll`) --roll on a command.
-void add_grammar_options(CLI::App& command, GrammarInput& input,
-                         bool with_roll, bool is_file_required = true);
+void add_grammar_options(CLI::App& command, GrammarInput& input, bool with_roll,
+                         bool is_file_required = true);
 
 /// Warns on standard error about polygons the turtle dropped: unclosed,
 /// unmatched `}`, fewer than 3 distinct points.
@@ -58,9 +58,10 @@ struct PrintInput {
   std::optional<std::string> size;
   std::optional<std::string> scale;
   std::optional<std::string> tolerance;
+  std::optional<std::string> base;
 };
 
-/// Registers --wall, --height, --size, --scale and --tolerance.
+/// Registers --wall, --height, --size, --scale, --tolerance and --base.
 void add_print_options(CLI::App& command, PrintInput& input);
 
 /// The file's print settings overridden by the command line's.

@@ -92,6 +92,9 @@ void add_print_options(CLI::App& command, PrintInput& input) {
   size->excludes(scale);
   command.add_option("--tolerance", input.tolerance,
                      "chord error of tube cross-sections (default 0.05mm)");
+  command.add_option("--base", input.base,
+                     "auto: a disc under a model that would stand on a small "
+                     "footprint (default); disc; none");
 }
 
 PrintSettings print_settings(const lsys::Grammar& grammar,
@@ -107,9 +110,11 @@ PrintSettings print_settings(const lsys::Grammar& grammar,
   if (input.tolerance) {
     given.tolerance_mm = parse_length_mm(*input.tolerance, "--tolerance");
   }
+  if (input.base) given.base = parse_base(*input.base, "--base");
   return resolve_print_settings(
       grammar, given, input.height || input.size || input.scale,
-      input.wall.has_value(), input.tolerance.has_value());
+      input.wall.has_value(), input.tolerance.has_value(),
+      input.base.has_value());
 }
 
 lsys::DerivationOptions derivation_options(const GrammarInput& input) {

@@ -23,19 +23,37 @@ double file_length(const lsys::Grammar& grammar,
 
 }  // namespace
 
+Base parse_base(const std::string& text, const std::string& what) {
+  if (text == "auto") return Base::Auto;
+  if (text == "disc") return Base::Disc;
+  if (text == "none") return Base::None;
+  throw lsys::ParseError(lsys::Diagnostic{
+      .file = what,
+      .message = "base must be auto, disc or none, not '" + text + "'"});
+}
+
 std::vector<std::string> print_setting_names() {
-  return {"wall", "height", "size", "scale", "tolerance"};
+  return {"wall", "height", "size", "scale", "tolerance", "base"};
 }
 
 PrintSettings resolve_print_settings(const lsys::Grammar& grammar,
                                      const PrintSettings& command_line,
                                      bool command_line_sets_size,
                                      bool command_line_sets_wall,
-                                     bool command_line_sets_tolerance) {
+                                     bool command_line_sets_tolerance,
+                                     bool command_line_sets_base) {
   PrintSettings file;
   int sizes = 0;
   std::size_t second_size = 0;
   for (const lsys::ExtraSetting& s : grammar.extra_settings) {
+    if (s.key == "base") {
+      try {
+        file.base = parse_base(s.value, s.key);
+      } catch (const lsys::ParseError& e) {
+        throw lsys::error_at(*grammar.source, s.offset, e.diagnostic().message);
+      }
+      continue;
+    }
     const double mm = file_length(grammar, s);
     if (s.key == "wall") file.wall_mm = mm;
     if (s.key == "tolerance") file.tolerance_mm = mm;
@@ -58,6 +76,7 @@ PrintSettings resolve_print_settings(const lsys::Grammar& grammar,
   }
   if (command_line_sets_wall) out.wall_mm = command_line.wall_mm;
   if (command_line_sets_tolerance) out.tolerance_mm = command_line.tolerance_mm;
+  if (command_line_sets_base) out.base = command_line.base;
   return out;
 }
 

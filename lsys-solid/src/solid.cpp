@@ -50,6 +50,9 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   report.joints = parts.joints;
   report.plates = parts.plates;
   report.skipped_polygons = parts.skipped_polygons;
+  report.placement =
+      place_on_bed(parts.parts, options.print.base, options.print.wall_mm,
+                   options.print.tolerance_mm);
   report.seconds.parts = clock.lap();
 
   if (options.unite) {

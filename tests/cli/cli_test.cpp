@@ -165,6 +165,22 @@ TEST_F(Build, RendersAPreviewBesideTheMesh) {
   EXPECT_FALSE(std::filesystem::exists(dir_ / "b.jpg"));
 }
 
+TEST_F(Build, RefusesAnUnknownBase) {
+  std::filesystem::copy_file(kSource / "printables/branches-90.ls",
+                             dir_ / "b.ls");
+  const auto r = run_command(lsolid() + " b.ls --base wobbly", dir_);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err,
+            "--base: error: base must be auto, disc or none, not 'wobbly'\n");
+  { std::ofstream(dir_ / "c.ls") << "base: tripod\n\u03C9: F\n"; }
+  const auto file = run_command(lsolid() + " c.ls", dir_);
+  EXPECT_EQ(file.exit_code, 2);
+  EXPECT_EQ(file.err,
+            "c.ls:1:7: error: base must be auto, disc or none, not 'tripod'\n"
+            "base: tripod\n"
+            "      ^\n");
+}
+
 TEST_F(Build, LeavesNothingBehindOnBadInput) {
   { std::ofstream(dir_ / "bad.ls") << "\u03C9: F\nF \u2192 F]\n"; }
   { std::ofstream(dir_ / "old.stl") << "keep me"; }
@@ -199,7 +215,7 @@ TEST_F(Build, ReadsPrintSettingsFromTheFile) {
   // A thin F: 2 cm tall, as wide as the 1 mm wall.
   {
     std::ofstream(dir_ / "h.ls")
-        << "height: 2cm\nwall: 1mm\nwidth: 0.001\n\u03C9: F\n";
+        << "height: 2cm\nwall: 1mm\nbase: none\nwidth: 0.001\n\u03C9: F\n";
   }
   EXPECT_EQ(run_command(lsolid() + " h.ls", dir_).exit_code, 0);
   const auto check = run_command(lsolid() + " check --json h.stl", dir_);
@@ -208,6 +224,15 @@ TEST_F(Build, ReadsPrintSettingsFromTheFile) {
   // A heptagon of circumradius 0.5 mm (0.684 mm²) times 20 mm.
   EXPECT_NE(check.out.find("\"volume_mm3\": 13.68"), std::string::npos)
       << check.out;
+  // The command line wins: a disc 2 mm thick (two walls) under the foot.
+  const auto disc = run_command(lsolid() + " h.ls --base disc", dir_);
+  EXPECT_EQ(disc.exit_code, 0);
+  EXPECT_NE(disc.out.find("base: a disc of "), std::string::npos);
+  EXPECT_NE(disc.out.find(" mm radius and 2.0 mm under a foot 1.0 mm wide\n"),
+            std::string::npos)
+      << disc.out;
+  EXPECT_NE(disc.out.find(", from ("), std::string::npos);
+  EXPECT_NE(disc.out.find(", 0.00)\n"), std::string::npos) << disc.out;
 }
 
 TEST_F(Build, SkeletonInMillimetresWithPrintOptions) {

@@ -51,10 +51,13 @@ TEST(Solid, HilbertCubeIsOneGenusZeroShellOfTheExpectedVolume) {
 
 TEST(Solid, FitsTheLongestSideAndClampsToTheWall) {
   const Solid s = build_solid(parse(kHilbert), {.print = {.wall_mm = 1.2}});
+  EXPECT_FALSE(s.report.placement.has_base);  // it stands on a face
+  EXPECT_EQ(s.report.validation.bounds.min.z, 0.0);
   const glm::dvec3 size = s.report.validation.bounds.size();
   EXPECT_NEAR(std::max({size.x, size.y, size.z}), 100.0, 0.5);
-  const Solid thin = build_solid(parse("\u03C9: F\nwidth: 0.001\n"),
-                                 {.print = {.wall_mm = 0.8, .size_mm = 50}});
+  const Solid thin = build_solid(
+      parse("\u03C9: F\nwidth: 0.001\n"),
+      {.print = {.wall_mm = 0.8, .size_mm = 50, .base = Base::None}});
   // A heptagon of circumradius 0.4 mm: between its width across flats and
   // its diameter.
   EXPECT_GE(thin.report.validation.bounds.size().x,

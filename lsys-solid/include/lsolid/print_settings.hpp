@@ -10,6 +10,13 @@
 
 namespace lsolid {
 
+/// What the model stands on (see placement.hpp).
+enum class Base {
+  Auto,  ///< a disc where the model would stand on a small footprint
+  Disc,  ///< always a disc
+  None,  ///< never
+};
+
 /// How to print: sizes in millimetres. At most one of height, size and
 /// scale is set; with none, the longest side becomes 100 mm.
 struct PrintSettings {
@@ -18,7 +25,12 @@ struct PrintSettings {
   std::optional<double> size_mm;            ///< longest side
   std::optional<double> scale_mm_per_unit;  ///< millimetres per model unit
   double tolerance_mm = 0.05;  ///< chord error of tube cross-sections
+  Base base = Base::Auto;
 };
+
+/// `auto`, `disc` or `none`.
+/// @throws lsys::ParseError naming `what` for anything else.
+[[nodiscard]] Base parse_base(const std::string& text, const std::string& what);
 
 /// The setting names a `.ls` file may use for print settings (`wall: 0.8mm`),
 /// to pass as lsys::ParseOptions::extra_settings.
@@ -30,6 +42,6 @@ struct PrintSettings {
 [[nodiscard]] PrintSettings resolve_print_settings(
     const lsys::Grammar& grammar, const PrintSettings& command_line,
     bool command_line_sets_size, bool command_line_sets_wall,
-    bool command_line_sets_tolerance);
+    bool command_line_sets_tolerance, bool command_line_sets_base = false);
 
 }  // namespace lsolid

@@ -6,6 +6,7 @@
 
 #include "lsolid/boolean.hpp"
 #include "lsolid/mesh.hpp"
+#include "lsolid/placement.hpp"
 #include "lsolid/print_settings.hpp"
 #include "lsolid/rounding.hpp"
 #include "lsolid/validate.hpp"
@@ -37,6 +38,7 @@ struct StageSeconds {
 
 /// What was built.
 struct SolidReport {
+  Placement placement;
   std::size_t segments = 0;
   std::size_t polygons = 0;
   std::size_t tubes = 0;

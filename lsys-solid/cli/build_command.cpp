@@ -4,12 +4,15 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include "commands.hpp"
 #include "lsolid/errors.hpp"
 #include "lsolid/mesh_io.hpp"
+#include "lsolid/overhang.hpp"
 #include "lsolid/preview.hpp"
 #include "lsolid/solid.hpp"
+#include "lsolid/units.hpp"
 #include "lsys/diagnostic.hpp"
 
 namespace lsolid::cli {
@@ -96,6 +99,8 @@ int run_build(const BuildCommand& command) {
         .message = "a preview is a PNG: name it FILE.png, not '" +
                    preview.string() + "'"});
   }
+  std::optional<glm::dvec3> bed;
+  if (command.bed) bed = parse_bed_mm(*command.bed, "--bed");
   const lsys::Grammar grammar = load_grammar(command.input);
   SolidOptions options;
   options.derivation = derivation_options(command.input);
@@ -106,6 +111,25 @@ int run_build(const BuildCommand& command) {
   const Solid solid = build_solid(grammar, options);
   warn_about_polygons(solid.report.dropped);
   print_report(solid.report, options.unite);
+  const OverhangReport over = overhang(solid.mesh);
+  fmt::print("overhang: {:.1f} mm² faces down more steeply than 45°: {}\n",
+             over.area_mm2,
+             over.needs_supports ? "supports needed" : "no supports needed");
+  const glm::dvec3 size = solid.report.validation.bounds.size();
+  if (bed && (size.x > bed->x || size.y > bed->y || size.z > bed->z)) {
+    fmt::print(
+        "bed: {:.1f} x {:.1f} x {:.1f} mm does not fit {} x {} x {} mm\n",
+        size.x, size.y, size.z, bed->x, bed->y, bed->z);
+    if (!command.force) {
+      std::fprintf(stderr,
+                   "error: the model does not fit the bed; %s was not written "
+                   "(--force writes it anyway)\n",
+                   output.string().c_str());
+      return 3;
+    }
+  } else if (bed) {
+    fmt::print("bed: fits {} x {} x {} mm\n", bed->x, bed->y, bed->z);
+  }
   if (!solid.report.validation.is_printable() && options.unite) {
     std::fprintf(stderr,
                  "error: the mesh is not printable; %s was not written\n",

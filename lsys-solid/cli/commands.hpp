@@ -86,6 +86,8 @@ struct BuildCommand {
   bool ascii = false;
   bool no_union = false;
   std::string preview;  ///< a PNG to render the written mesh to, or empty
+  std::optional<std::string> bed;  ///< the build volume, `220x220x250mm`
+  bool force = false;              ///< write even if it does not fit the bed
 };
 /// Returns the exit code (3 when the mesh is not printable).
 /// @throws lsys::ParseError, GeometryError, IoError.

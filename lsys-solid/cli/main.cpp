@@ -44,6 +44,11 @@ int main(int argc, char** argv) {
   app.add_option("-o,--output", build.output,
                  "output file: .stl (binary) or .off; default FILE.stl");
   app.add_flag("--ascii", build.ascii, "write ASCII STL");
+  app.add_option("--bed", build.bed,
+                 "the printer's build volume, e.g. 220x220x250mm: refuse to "
+                 "write a model that does not fit");
+  app.add_flag("--force", build.force,
+               "write the model even if it does not fit the --bed");
   app.add_option("--preview", build.preview,
                  "also render the mesh, shaded, to this PNG (offscreen)");
   app.add_flag("--no-union", build.no_union,

@@ -3,6 +3,7 @@
 #include "lsolid/units.hpp"
 
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <utility>
 
@@ -36,6 +37,31 @@ double parse_length_mm(std::string_view text, const std::string& what) {
   throw lsys::error_at(
       source, unit_at,
       "unknown unit '" + std::string(unit) + "': use mm, cm or in");
+}
+
+glm::dvec3 parse_bed_mm(std::string_view text, const std::string& what) {
+  std::size_t unit_at = text.size();
+  while (unit_at > 0 &&
+         std::isalpha(static_cast<unsigned char>(text[unit_at - 1])) != 0) {
+    --unit_at;
+  }
+  const std::string unit(text.substr(unit_at));
+  const std::string_view sides = text.substr(0, unit_at);
+  glm::dvec3 out(0.0);
+  std::size_t start = 0;
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t x = i < 2 ? sides.find('x', start) : sides.size();
+    if (x == std::string_view::npos ||
+        (i == 2 && sides.find('x', start) != std::string_view::npos)) {
+      throw lsys::ParseError(lsys::Diagnostic{
+          .file = what,
+          .message = "a bed is WIDTHxDEPTHxHEIGHT, such as 220x220x250mm"});
+    }
+    out[i] = parse_length_mm(std::string(sides.substr(start, x - start)) + unit,
+                             what);
+    start = x + 1;
+  }
+  return out;
 }
 
 }  // namespace lsolid

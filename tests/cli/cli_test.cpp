@@ -181,6 +181,28 @@ TEST_F(Build, RefusesAnUnknownBase) {
             "      ^\n");
 }
 
+TEST_F(Build, RefusesAModelThatDoesNotFitTheBedUnlessForced) {
+  std::filesystem::copy_file(kSource / "printables/hilbert-cube.ls",
+                             dir_ / "h.ls");  // 60 mm on each side
+  const auto small = run_command(lsolid() + " h.ls --bed 50x50x50mm", dir_);
+  EXPECT_EQ(small.exit_code, 3);
+  EXPECT_NE(small.out.find("bed: 60.0 x 60.0 x 60.0 mm does not fit 50 x 50 x "
+                           "50 mm\n"),
+            std::string::npos)
+      << small.out;
+  EXPECT_EQ(small.err,
+            "error: the model does not fit the bed; h.stl was not written "
+            "(--force writes it anyway)\n");
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "h.stl"));
+  EXPECT_EQ(
+      run_command(lsolid() + " h.ls --bed 50x50x50mm --force", dir_).exit_code,
+      0);
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "h.stl"));
+  const auto fits = run_command(lsolid() + " h.ls --bed 22x22x25cm", dir_);
+  EXPECT_NE(fits.out.find("bed: fits 220 x 220 x 250 mm\n"), std::string::npos);
+  EXPECT_NE(fits.out.find("overhang: "), std::string::npos);
+}
+
 TEST_F(Build, LeavesNothingBehindOnBadInput) {
   { std::ofstream(dir_ / "bad.ls") << "\u03C9: F\nF \u2192 F]\n"; }
   { std::ofstream(dir_ / "old.stl") << "keep me"; }

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <glm/vec3.hpp>
 #include <string>
 #include <string_view>
 
@@ -14,5 +15,11 @@ namespace lsolid {
 ///   bad number, an unknown unit, or a value that is not positive.
 [[nodiscard]] double parse_length_mm(std::string_view text,
                                      const std::string& what);
+
+/// Reads a printer's build volume such as `220x220x250mm` (width, depth,
+/// height; one unit for all three, millimetres by default).
+/// @throws lsys::ParseError (file `what`) for anything else.
+[[nodiscard]] glm::dvec3 parse_bed_mm(std::string_view text,
+                                      const std::string& what);
 
 }  // namespace lsolid

@@ -74,6 +74,49 @@ void print_report(const SolidReport& r, bool united) {
   }
 }
 
+std::string json_string(const std::string& s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string json_point(const glm::dvec3& p) {
+  return fmt::format("[{}, {}, {}]", p.x, p.y, p.z);
+}
+
+// The report as one JSON object, for scripts (--json).
+std::string json_report(const SolidReport& r, const OverhangReport& over,
+                        const std::optional<glm::dvec3>& bed, bool fits,
+                        const std::filesystem::path& output, bool written,
+                        bool united) {
+  const ValidationReport& v = r.validation;
+  const Placement& p = r.placement;
+  return fmt::format(
+      "{{\"output\": {}, \"written\": {}, \"united\": {}, \"segments\": {}, "
+      "\"leaves\": {}, \"tubes\": {}, \"junction_hulls\": {}, \"joints\": {}, "
+      "\"leaf_plates\": {}, \"booleans\": {}, \"mm_per_unit\": {}, "
+      "\"base\": {}, \"triangles\": {}, \"volume_mm3\": {}, "
+      "\"bounds\": {{\"min\": {}, \"max\": {}}}, \"printable\": {}, "
+      "\"shells\": {}, \"genus\": {}, \"overhang_mm2\": {}, "
+      "\"needs_supports\": {}, \"fits_bed\": {}, "
+      "\"seconds\": {{\"skeleton\": {}, \"parts\": {}, \"union\": {}, "
+      "\"rounding\": {}, \"check\": {}}}}}\n",
+      json_string(output.string()), written, united, r.segments, r.polygons,
+      r.tubes, r.junctions, r.joints, r.plates, r.union_stats.booleans,
+      r.mm_per_unit,
+      p.has_base ? fmt::format("{{\"radius_mm\": {}, \"thickness_mm\": {}}}",
+                               p.base_radius_mm, p.base_thickness_mm)
+                 : std::string("null"),
+      v.triangles, v.volume_mm3, json_point(v.bounds.min),
+      json_point(v.bounds.max), v.is_printable(), v.shells, v.genus,
+      over.area_mm2, over.needs_supports,
+      bed ? (fits ? "true" : "false") : "null", r.seconds.skeleton,
+      r.seconds.parts, r.seconds.unite, r.seconds.round, r.seconds.check);
+}
+
 }  // namespace
 
 int run_build(const BuildCommand& command) {
@@ -110,41 +153,59 @@ int run_build(const BuildCommand& command) {
   options.float_coordinates = format != MeshFormat::Off;
   const Solid solid = build_solid(grammar, options);
   warn_about_polygons(solid.report.dropped);
-  print_report(solid.report, options.unite);
+  const bool text = !command.quiet && !command.json;
+  if (text) print_report(solid.report, options.unite);
   const OverhangReport over = overhang(solid.mesh);
-  fmt::print("overhang: {:.1f} mm² faces down more steeply than 45°: {}\n",
-             over.area_mm2,
-             over.needs_supports ? "supports needed" : "no supports needed");
+  if (text) {
+    fmt::print("overhang: {:.1f} mm² faces down more steeply than 45°: {}\n",
+               over.area_mm2,
+               over.needs_supports ? "supports needed" : "no supports needed");
+  }
   const glm::dvec3 size = solid.report.validation.bounds.size();
-  if (bed && (size.x > bed->x || size.y > bed->y || size.z > bed->z)) {
-    fmt::print(
-        "bed: {:.1f} x {:.1f} x {:.1f} mm does not fit {} x {} x {} mm\n",
-        size.x, size.y, size.z, bed->x, bed->y, bed->z);
-    if (!command.force) {
-      std::fprintf(stderr,
-                   "error: the model does not fit the bed; %s was not written "
-                   "(--force writes it anyway)\n",
-                   output.string().c_str());
-      return 3;
+  const bool fits =
+      !bed || (size.x <= bed->x && size.y <= bed->y && size.z <= bed->z);
+  if (text && bed) {
+    if (fits) {
+      fmt::print("bed: fits {} x {} x {} mm\n", bed->x, bed->y, bed->z);
+    } else {
+      fmt::print(
+          "bed: {:.1f} x {:.1f} x {:.1f} mm does not fit {} x {} x {} mm\n",
+          size.x, size.y, size.z, bed->x, bed->y, bed->z);
     }
-  } else if (bed) {
-    fmt::print("bed: fits {} x {} x {} mm\n", bed->x, bed->y, bed->z);
+  }
+  const auto finish = [&](bool written) {
+    if (command.json) {
+      fmt::print("{}", json_report(solid.report, over, bed, fits, output,
+                                   written, options.unite));
+    }
+    std::fflush(stdout);
+  };
+  if (!fits && !command.force) {
+    finish(false);
+    std::fprintf(stderr,
+                 "error: the model does not fit the bed; %s was not written "
+                 "(--force writes it anyway)\n",
+                 output.string().c_str());
+    return 3;
   }
   if (!solid.report.validation.is_printable() && options.unite) {
+    finish(false);
     std::fprintf(stderr,
                  "error: the mesh is not printable; %s was not written\n",
                  output.string().c_str());
     return 3;
   }
   write_mesh(solid.mesh, output, format);
-  fmt::print(
-      "wrote {}{}\n", output.string(),
-      options.unite ? "" : " (overlapping parts, not united: --no-union)");
+  if (text) {
+    fmt::print(
+        "wrote {}{}\n", output.string(),
+        options.unite ? "" : " (overlapping parts, not united: --no-union)");
+  }
   if (!preview.empty()) {
     write_png(render_preview(solid.mesh), preview);
-    fmt::print("rendered {}\n", preview.string());
+    if (text) fmt::print("rendered {}\n", preview.string());
   }
-  std::fflush(stdout);
+  finish(true);
   return 0;
 }
 

@@ -88,6 +88,8 @@ struct BuildCommand {
   std::string preview;  ///< a PNG to render the written mesh to, or empty
   std::optional<std::string> bed;  ///< the build volume, `220x220x250mm`
   bool force = false;              ///< write even if it does not fit the bed
+  bool quiet = false;              ///< no report (errors still go to stderr)
+  bool json = false;               ///< the report as one JSON object
 };
 /// Returns the exit code (3 when the mesh is not printable).
 /// @throws lsys::ParseError, GeometryError, IoError.

@@ -49,6 +49,10 @@ int main(int argc, char** argv) {
                  "write a model that does not fit");
   app.add_flag("--force", build.force,
                "write the model even if it does not fit the --bed");
+  app.add_flag("-q,--quiet", build.quiet,
+               "print no report (errors still go to standard error)");
+  app.add_flag("--json", build.json,
+               "print the report as one JSON object instead of text");
   app.add_option("--preview", build.preview,
                  "also render the mesh, shaded, to this PNG (offscreen)");
   app.add_flag("--no-union", build.no_union,

@@ -203,6 +203,29 @@ TEST_F(Build, RefusesAModelThatDoesNotFitTheBedUnlessForced) {
   EXPECT_NE(fits.out.find("overhang: "), std::string::npos);
 }
 
+TEST_F(Build, IsQuietOrSpeaksJsonWhenAsked) {
+  std::filesystem::copy_file(kSource / "printables/hilbert-cube.ls",
+                             dir_ / "h.ls");
+  const auto quiet = run_command(lsolid() + " h.ls -q", dir_);
+  EXPECT_EQ(quiet.exit_code, 0);
+  EXPECT_EQ(quiet.out, "");
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "h.stl"));
+  const auto json = run_command(lsolid() + " h.ls --json -o j.stl", dir_);
+  EXPECT_EQ(json.exit_code, 0);
+  const std::string head =
+      "{\"output\": \"j.stl\", \"written\": true, \"united\": true, ";
+  EXPECT_EQ(json.out.substr(0, head.size()), head);
+  EXPECT_NE(json.out.find("\"segments\": 63, \"leaves\": 0, \"tubes\": 1,"),
+            std::string::npos)
+      << json.out;
+  EXPECT_NE(json.out.find("\"printable\": true, \"shells\": 1, \"genus\": 0,"),
+            std::string::npos);
+  EXPECT_NE(json.out.find("\"base\": null,"), std::string::npos);
+  EXPECT_NE(json.out.find("\"fits_bed\": null,"), std::string::npos);
+  EXPECT_EQ(json.out.back(), '\n');
+  EXPECT_EQ(std::count(json.out.begin(), json.out.end(), '\n'), 1);
+}
+
 TEST_F(Build, LeavesNothingBehindOnBadInput) {
   { std::ofstream(dir_ / "bad.ls") << "\u03C9: F\nF \u2192 F]\n"; }
   { std::ofstream(dir_ / "old.stl") << "keep me"; }

@@ -1,6 +1,7 @@
 // Copyright 2026 the lsolid authors
 // SPDX-License-Identifier: MIT
 #include <fmt/format.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -151,9 +152,26 @@ int run_build(const BuildCommand& command) {
   options.print = print_settings(grammar, command.print);
   options.unite = !command.no_union;
   options.float_coordinates = format != MeshFormat::Off;
-  const Solid solid = build_solid(grammar, options);
-  warn_about_polygons(solid.report.dropped);
   const bool text = !command.quiet && !command.json;
+  // A progress bar on a terminal only: redrawn in place on standard error,
+  // and wiped before the report.
+  const bool bar = text && ::isatty(STDERR_FILENO) != 0;
+  if (bar) {
+    options.progress = [](std::string_view stage, double fraction) {
+      constexpr int kWidth = 30;
+      const int filled = static_cast<int>(fraction * kWidth);
+      std::fprintf(
+          stderr, "\r%-8.*s [%s%s] %3d%%", static_cast<int>(stage.size()),
+          stage.data(),
+          std::string(static_cast<std::size_t>(filled), '#').c_str(),
+          std::string(static_cast<std::size_t>(kWidth - filled), ' ').c_str(),
+          static_cast<int>(fraction * 100.0));
+      std::fflush(stderr);
+    };
+  }
+  const Solid solid = build_solid(grammar, options);
+  if (bar) std::fprintf(stderr, "\r%50s\r", "");
+  warn_about_polygons(solid.report.dropped);
   if (text) print_report(solid.report, options.unite);
   const OverhangReport over = overhang(solid.mesh);
   if (text) {

@@ -31,6 +31,10 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   Solid solid;
   SolidReport& report = solid.report;
   Stopwatch clock;
+  const auto tell = [&](std::string_view stage, double fraction) {
+    if (options.progress) options.progress(stage, fraction);
+  };
+  tell("skeleton", 0.0);
   const lsys::Skeleton skeleton =
       lsys::interpret(grammar, options.derivation, options.interpretation);
   report.segments = skeleton.segments.size();
@@ -39,6 +43,7 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   report.dropped.unclosed_polygons = skeleton.unclosed_polygons;
   report.dropped.unmatched_polygon_ends = skeleton.unmatched_polygon_ends;
   report.seconds.skeleton = clock.lap();
+  tell("parts", 0.0);
 
   const ScaledSkeleton scaled = scale_to_print(skeleton, options.print);
   report.mm_per_unit = scaled.mm_per_unit;
@@ -54,9 +59,11 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
       place_on_bed(parts.parts, options.print.base, options.print.wall_mm,
                    options.print.tolerance_mm);
   report.seconds.parts = clock.lap();
+  tell("union", 0.0);
 
   if (options.unite) {
-    UnionResult united = union_parts(std::move(parts.parts));
+    UnionResult united = union_parts(std::move(parts.parts),
+                                     [&](double done) { tell("union", done); });
     solid.mesh = std::move(united.mesh);
     report.union_stats = united.stats;
     report.cavities_filled = remove_cavities(solid.mesh);
@@ -64,6 +71,7 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
     for (const Part& part : parts.parts) append(solid.mesh, part.mesh);
   }
   report.seconds.unite = clock.lap();
+  tell("rounding", 0.0);
   if (options.unite) {
     solid.mesh = round_and_repair(solid.mesh, options.float_coordinates,
                                   report.rounding);
@@ -72,9 +80,11 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
     solid.mesh = round_to_float(solid.mesh);
   }
   report.seconds.round = clock.lap();
+  tell("check", 0.0);
 
   report.validation = validate(solid.mesh);
   report.seconds.check = clock.lap();
+  tell("check", 1.0);
   return solid;
 }
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
@@ -67,6 +68,21 @@ TEST(Boolean, UnitesPartsThatDoNotMeetEachOtherInOneBoolean) {
   EXPECT_EQ(u.stats.booleans, 1U);
   EXPECT_EQ(u.stats.concatenations, 3U);
   EXPECT_NEAR(signed_volume(u.mesh), 10.0 + 4 * (4.5 - 0.5), 1e-9);
+}
+
+TEST(Boolean, ReportsProgressUpToTheEnd) {
+  std::vector<Part> parts;
+  for (int i = 0; i < 6; ++i) {  // a chain of overlapping cubes
+    parts.push_back({box_mesh({i * 0.5, 0, 0}, {i * 0.5 + 1, 1, 1}), "cube"});
+  }
+  std::vector<double> told;
+  const UnionResult u =
+      union_parts(std::move(parts), [&](double done) { told.push_back(done); });
+  ASSERT_FALSE(told.empty());
+  EXPECT_TRUE(std::is_sorted(told.begin(), told.end()));
+  EXPECT_GT(told.front(), 0.0);
+  EXPECT_EQ(told.back(), 1.0);
+  EXPECT_NEAR(signed_volume(u.mesh), 3.5, 1e-9);
 }
 
 TEST(Boolean, CrossingFrustaAgreeWithAnIndependentVolume) {

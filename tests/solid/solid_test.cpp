@@ -66,6 +66,23 @@ TEST(Solid, FitsTheLongestSideAndClampsToTheWall) {
   EXPECT_NEAR(thin.report.validation.bounds.size().z, 50.0, 0.01);
 }
 
+TEST(Solid, TellsItsProgressStageByStage) {
+  std::vector<std::string> stages;
+  double last_union = -1.0;
+  SolidOptions options;
+  options.progress = [&](std::string_view stage, double fraction) {
+    if (stages.empty() || stages.back() != stage) stages.emplace_back(stage);
+    if (stage == "union") {
+      EXPECT_GE(fraction, last_union);
+      last_union = fraction;
+    }
+  };
+  (void)build_solid(parse("\u03C9: F[+F][-F]\n\u03B4=30\u00B0\n"), options);
+  EXPECT_EQ(stages, (std::vector<std::string>{"skeleton", "parts", "union",
+                                              "rounding", "check"}));
+  EXPECT_EQ(last_union, 1.0);
+}
+
 TEST(Solid, AbopBushWithLeavesIsOneValidShell) {
   const std::string bush =
       "n=3, \u03B4=22.5\u00B0\nwidth: 0.3\nwidth factor: 0.75\n\u03C9: A\n"

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "lsolid/mesh.hpp"
@@ -39,6 +40,9 @@ struct UnionResult {
 /// @pre every part is closed and outward-oriented.
 /// @throws GeometryError naming the parts when a part is not a valid solid
 ///   or a union still fails.
-[[nodiscard]] UnionResult union_parts(std::vector<Part> parts);
+/// @param progress if not empty, called after each union with the fraction
+///   of the work done (weighted by the operands' sizes), ending with 1.
+[[nodiscard]] UnionResult union_parts(
+    std::vector<Part> parts, const std::function<void(double)>& progress = {});
 
 }  // namespace lsolid

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
+#include <string_view>
 
 #include "lsolid/boolean.hpp"
 #include "lsolid/mesh.hpp"
@@ -25,6 +27,10 @@ struct SolidOptions {
   bool unite = true;
   /// Round coordinates to floats before checking, as STL stores them.
   bool float_coordinates = true;
+  /// Told how far the build is: the stage ("skeleton", "parts", "union",
+  /// "rounding", "check") and the fraction of it done, 0 to 1, from the
+  /// thread that builds. Empty: not told.
+  std::function<void(std::string_view stage, double fraction)> progress;
 };
 
 /// Seconds spent in each stage.

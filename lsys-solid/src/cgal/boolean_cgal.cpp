@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <glm/common.hpp>
 #include <set>
 #include <string>
@@ -35,6 +36,7 @@
 #include "conversion.hpp"
 #include "lsolid/boolean.hpp"
 #include "lsolid/errors.hpp"
+#include "lsolid/rounding.hpp"
 
 namespace lsolid {
 namespace {
@@ -75,86 +77,89 @@ std::uint32_t morton(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
 
 // The vertices a union created are lazy exact points whose exact values
 // (rationals) grow with every level of the reduction; most of the union's
-// time went into GMP for them. Each is rounded to doubles unless that makes
-// a face near it degenerate or makes two faces intersect, tested with exact
-// predicates on the rounded coordinates; the vertices of offending faces get
-// their exact points back, and the test is repeated until it passes (at
-// worst with every exact point back). So one bad spot in a large operand
-// does not keep all its new points exact. Returns the number of points
-// left exact.
-std::size_t round_new_points(ExactMesh& mesh) {
-  using Vertex = ExactMesh::Vertex_index;
-  using Face = ExactMesh::Face_index;
-  std::vector<Vertex> fresh;
+// time went into GMP for them. Where rounding them to doubles provably keeps
+// the mesh valid (no face near them becomes degenerate or intersecting,
+// tested with exact predicates on the rounded coordinates), they are
+// rounded, and the next union starts from doubles again. Where it would not,
+// the exact points stay. Returns true if the points were rounded.
+bool round_new_points(ExactMesh& mesh) {
+  using Face = InexactMesh::Face_index;
+  std::vector<bool> is_new(mesh.number_of_vertices(), false);
+  bool any = false;
   for (const auto v : mesh.vertices()) {
     const auto& a = CGAL::approx(mesh.point(v));
-    if (!a.x().is_point() || !a.y().is_point() || !a.z().is_point())
-      fresh.push_back(v);
+    if (!a.x().is_point() || !a.y().is_point() || !a.z().is_point()) {
+      is_new[static_cast<std::size_t>(v)] = true;
+      any = true;
+    }
   }
-  if (fresh.empty()) return 0;
-  // Boxes of the exact faces, which hold the rounded faces too (the double
-  // nearest to a value lies within any interval of doubles around it).
-  using FaceBox = CGAL::Box_intersection_d::Box_with_info_d<
-      double, 3, Face, CGAL::Box_intersection_d::ID_EXPLICIT>;
+  if (!any) return false;
+  InexactMesh rounded;
+  rounded.reserve(mesh.number_of_vertices(), mesh.number_of_edges(),
+                  mesh.number_of_faces());
+  for (const auto v : mesh.vertices()) {
+    const Exact::Point_3& p = mesh.point(v);
+    rounded.add_vertex(Inexact::Point_3(CGAL::to_double(p.x()),
+                                        CGAL::to_double(p.y()),
+                                        CGAL::to_double(p.z())));
+  }
+  std::vector<Face> near_new;
+  for (const auto f : mesh.faces()) {
+    std::array<InexactMesh::Vertex_index, 3> corners;
+    std::size_t k = 0;
+    bool touches_new = false;
+    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+      corners[k++] = InexactMesh::Vertex_index(static_cast<std::uint32_t>(v));
+      touches_new = touches_new || is_new[static_cast<std::size_t>(v)];
+    }
+    const Face g = rounded.add_face(corners[0], corners[1], corners[2]);
+    if (g == InexactMesh::null_face()) return false;
+    if (touches_new) {
+      if (PMP::is_degenerate_triangle_face(g, rounded)) return false;
+      near_new.push_back(g);
+    }
+  }
+  // Faces whose boxes meet a changed face: the only ones it can now cut.
+  using FaceBox = CGAL::Box_intersection_d::Box_with_info_d<double, 3, Face>;
+  std::vector<FaceBox> changed_boxes;
   std::vector<FaceBox> all_boxes;
-  all_boxes.reserve(mesh.number_of_faces());
-  for (const Face f : mesh.faces())
-    all_boxes.emplace_back(PMP::face_bbox(f, mesh), f);
-  std::unordered_map<std::uint32_t, Exact::Point_3> exact;
-  for (const Vertex v : fresh) {
-    const Exact::Point_3 p = mesh.point(v);
-    exact.emplace(static_cast<std::uint32_t>(v), p);
-    mesh.point(v) = Exact::Point_3(
-        CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  for (const Face f : near_new)
+    changed_boxes.emplace_back(PMP::face_bbox(f, rounded), f);
+  for (const Face f : rounded.faces())
+    all_boxes.emplace_back(PMP::face_bbox(f, rounded), f);
+  std::set<Face> range(near_new.begin(), near_new.end());
+  CGAL::box_intersection_d(changed_boxes.begin(), changed_boxes.end(),
+                           all_boxes.begin(), all_boxes.end(),
+                           [&](const FaceBox&, const FaceBox& other) {
+                             range.insert(other.info());
+                           });
+  if (PMP::does_self_intersect(range, rounded)) return false;
+  for (const auto v : mesh.vertices()) {
+    if (!is_new[static_cast<std::size_t>(v)]) continue;
+    const Inexact::Point_3& p =
+        rounded.point(InexactMesh::Vertex_index(static_cast<std::uint32_t>(v)));
+    mesh.point(v) = Exact::Point_3(p.x(), p.y(), p.z());
   }
-  std::set<Vertex> rounded(fresh.begin(), fresh.end());
-  while (!rounded.empty()) {
-    std::set<Face> near;
-    for (const Vertex v : rounded) {
-      for (const Face f : CGAL::faces_around_target(mesh.halfedge(v), mesh)) {
-        if (f != ExactMesh::null_face()) near.insert(f);
-      }
-    }
-    std::set<Face> problems;
-    for (const Face f : near) {
-      if (PMP::is_degenerate_triangle_face(f, mesh)) problems.insert(f);
-    }
-    // Faces whose boxes meet a changed face: the only ones it can now cut.
-    std::vector<FaceBox> changed_boxes;
-    for (const Face f : near)
-      changed_boxes.emplace_back(PMP::face_bbox(f, mesh), f);
-    std::set<Face> range(near.begin(), near.end());
-    CGAL::box_intersection_d(changed_boxes.begin(), changed_boxes.end(),
-                             all_boxes.begin(), all_boxes.end(),
-                             [&](const FaceBox&, const FaceBox& other) {
-                               range.insert(other.info());
-                             });
-    if (problems.empty()) {
-      std::vector<std::pair<Face, Face>> pairs;
-      PMP::self_intersections(range, mesh, std::back_inserter(pairs));
-      for (const auto& [f, g] : pairs) {
-        problems.insert(f);
-        problems.insert(g);
-      }
-    }
-    if (problems.empty()) break;
-    bool restored = false;
-    for (const Face f : problems) {
-      for (const Vertex v :
-           CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
-        if (rounded.erase(v) > 0) {
-          mesh.point(v) = exact.at(static_cast<std::uint32_t>(v));
-          restored = true;
-        }
-      }
-    }
-    if (!restored) {  // the problem is not the rounding's: undo it all
-      for (const Vertex v : rounded)
-        mesh.point(v) = exact.at(static_cast<std::uint32_t>(v));
-      rounded.clear();
-    }
+  return true;
+}
+
+// Where some new points had to stay exact, the whole union is rounded to
+// doubles and mended as the final mesh is (round_and_repair: slivers
+// collapsed or flipped, intersecting faces rebuilt), so that the next union
+// starts from doubles and no rational grows across unions; dense models
+// (ABOP fig. 1.24b) spent most of their time in GMP otherwise. Kept only
+// if the result is a closed, self-intersection-free surface.
+bool round_and_mend(ExactMesh& mesh) {
+  RoundingStats stats;
+  const TriangleMesh mended =
+      round_and_repair(to_triangle_mesh(mesh), false, stats);
+  const InexactMesh check = to_surface_mesh<InexactMesh>(mended);
+  if (check.number_of_faces() == 0 || !CGAL::is_closed(check) ||
+      !CGAL::is_valid_polygon_mesh(check) || PMP::does_self_intersect(check)) {
+    return false;
   }
-  return fresh.size() - rounded.size();
+  mesh = to_surface_mesh<ExactMesh>(mended);
+  return true;
 }
 
 void translate(ExactMesh& mesh, const Exact::Vector_3& by) {
@@ -163,7 +168,8 @@ void translate(ExactMesh& mesh, const Exact::Vector_3& by) {
 
 class Unioner {
  public:
-  explicit Unioner(std::vector<Part> parts) : parts_(std::move(parts)) {}
+  Unioner(std::vector<Part> parts, std::function<void(double)> progress)
+      : parts_(std::move(parts)), progress_(std::move(progress)) {}
 
   UnionResult run() {
     if (parts_.empty())
@@ -176,6 +182,27 @@ class Unioner {
       return a.mesh.number_of_faces() > b.mesh.number_of_faces();
     };
     std::make_heap(groups.begin(), groups.end(), larger);
+    // The work expected: each union costs about its operands' sizes, and a
+    // union's result is about as large as both (the same merge order, on
+    // sizes alone).
+    double total = 0.0;
+    {
+      std::vector<double> sizes;
+      for (const Group& g : groups)
+        sizes.push_back(static_cast<double>(g.mesh.number_of_faces()));
+      const auto more = std::greater<>();
+      std::make_heap(sizes.begin(), sizes.end(), more);
+      while (sizes.size() > 1) {
+        std::pop_heap(sizes.begin(), sizes.end(), more);
+        const double a = sizes.back();
+        sizes.pop_back();
+        std::pop_heap(sizes.begin(), sizes.end(), more);
+        sizes.back() += a;
+        total += sizes.back();
+        std::push_heap(sizes.begin(), sizes.end(), more);
+      }
+    }
+    double done = 0.0;
     while (groups.size() > 1) {
       std::pop_heap(groups.begin(), groups.end(), larger);
       Group a = std::move(groups.back());
@@ -185,12 +212,16 @@ class Unioner {
       // The last union's new points are rounded with the whole mesh, by
       // round_and_repair.
       const bool last = groups.size() == 1;
+      done += static_cast<double>(a.mesh.number_of_faces() +
+                                  b.mesh.number_of_faces());
       groups.back() = merge(std::move(a), std::move(b), !last);
+      if (progress_ && !last) progress_(std::min(done / total, 0.99));
       std::push_heap(groups.begin(), groups.end(), larger);
     }
     UnionResult result;
     result.stats = stats_;
     result.mesh = to_triangle_mesh(groups.front().mesh);
+    if (progress_) progress_(1.0);
     return result;
   }
 
@@ -307,7 +338,11 @@ class Unioner {
         last_failure_ = "the parts touch at a point";
       }
       if (!ok) continue;
-      if (round_points && round_new_points(out) == 0) ++stats_.rounded;
+      if (round_points) {
+        if (round_new_points(out) || round_and_mend(out)) {
+          ++stats_.rounded;
+        }
+      }
       ++stats_.booleans;
       a.mesh = std::move(out);
       a.box += b.box;
@@ -333,14 +368,16 @@ class Unioner {
   }
 
   std::vector<Part> parts_;
+  std::function<void(double)> progress_;
   UnionStats stats_;
   std::string last_failure_;  // what CGAL said, if it threw
 };
 
 }  // namespace
 
-UnionResult union_parts(std::vector<Part> parts) {
-  return Unioner(std::move(parts)).run();
+UnionResult union_parts(std::vector<Part> parts,
+                        const std::function<void(double)>& progress) {
+  return Unioner(std::move(parts), progress).run();
 }
 
 }  // namespace lsolid

@@ -134,7 +134,7 @@ int run_build(const BuildCommand& command) {
     throw lsys::ParseError(lsys::Diagnostic{
         .file = "--output",
         .message = "unknown output format '" + output.extension().string() +
-                   "': use .stl or .off"});
+                   "': use .stl, .off or .scad"});
   }
   const std::filesystem::path preview = command.preview;
   if (!preview.empty() && preview.extension() != ".png") {

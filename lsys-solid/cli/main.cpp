@@ -41,8 +41,9 @@ int main(int argc, char** argv) {
 
   lsolid::cli::BuildCommand build;
   lsolid::cli::add_grammar_options(app, build.input, true, false);
-  app.add_option("-o,--output", build.output,
-                 "output file: .stl (binary) or .off; default FILE.stl");
+  app.add_option(
+      "-o,--output", build.output,
+      "output file: .stl (binary), .off or .scad (OpenSCAD); default FILE.stl");
   app.add_flag("--ascii", build.ascii, "write ASCII STL");
   app.add_option("--bed", build.bed,
                  "the printer's build volume, e.g. 220x220x250mm: refuse to "

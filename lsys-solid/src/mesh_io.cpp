@@ -169,7 +169,21 @@ glm::vec3 facet_normal(const TriangleMesh& mesh,
   return {n[0], n[1], n[2]};
 }
 
-std::string encode(const TriangleMesh& mesh, MeshFormat format) {
+// An OpenSCAD identifier from a file name: `abop-1.25-bush` gives
+// `abop_1_25_bush`.
+std::string scad_module_name(const std::filesystem::path& path) {
+  std::string name = path.stem().string();
+  for (char& c : name) {
+    if (std::isalnum(static_cast<unsigned char>(c)) == 0) c = '_';
+  }
+  if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0])) != 0) {
+    name.insert(0, "model_");
+  }
+  return name;
+}
+
+std::string encode(const TriangleMesh& mesh, MeshFormat format,
+                   const std::filesystem::path& path) {
   std::string out;
   char line[160];
   switch (format) {
@@ -228,6 +242,32 @@ std::string encode(const TriangleMesh& mesh, MeshFormat format) {
                std::to_string(t[2]) + "\n";
       }
       return out;
+    case MeshFormat::Scad: {
+      // OpenSCAD wants each face's points clockwise seen from outside, the
+      // opposite of our counter-clockwise triangles.
+      const std::string name = scad_module_name(path);
+      out =
+          "// Written by lsolid: one closed, 2-manifold solid in millimetres.\n"
+          "// `use <" +
+          path.filename().string() + ">` and call " + name +
+          "() to combine it with your own parts.\nmodule " + name +
+          "() {\n  polyhedron(points = [\n";
+      for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+        const glm::dvec3& v = mesh.vertices[i];
+        std::snprintf(line, sizeof(line), "    [%.9g, %.9g, %.9g]%s\n", v.x,
+                      v.y, v.z, i + 1 < mesh.vertices.size() ? "," : "");
+        out += line;
+      }
+      out += "  ], faces = [\n";
+      for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+        const auto& t = mesh.triangles[i];
+        out += "    [" + std::to_string(t[0]) + ", " + std::to_string(t[2]) +
+               ", " + std::to_string(t[1]) + "]" +
+               (i + 1 < mesh.triangles.size() ? ",\n" : "\n");
+      }
+      out += "  ], convexity = 10);\n}\n\n" + name + "();\n";
+      return out;
+    }
   }
   return out;
 }
@@ -239,8 +279,9 @@ MeshFormat format_for(const std::filesystem::path& path, bool ascii) {
   if (ext == ".stl")
     return ascii ? MeshFormat::StlAscii : MeshFormat::StlBinary;
   if (ext == ".off") return MeshFormat::Off;
+  if (ext == ".scad") return MeshFormat::Scad;
   throw IoError(path.string() + ": unknown output format '" + ext +
-                "' (use .stl or .off)");
+                "' (use .stl, .off or .scad)");
 }
 
 TriangleMesh read_mesh(const std::filesystem::path& path) {
@@ -262,7 +303,7 @@ TriangleMesh read_mesh(const std::filesystem::path& path) {
 
 void write_mesh(const TriangleMesh& mesh, const std::filesystem::path& path,
                 MeshFormat format) {
-  write_file_atomically(path, encode(mesh, format));
+  write_file_atomically(path, encode(mesh, format, path));
 }
 
 }  // namespace lsolid

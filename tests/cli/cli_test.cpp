@@ -245,9 +245,9 @@ TEST_F(Build, RefusesUnknownFormatsAndEmptyModels) {
                              dir_ / "b.ls");
   const auto r = run_command(lsolid() + " b.ls -o b.obj", dir_);
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(
-      r.err,
-      "--output: error: unknown output format '.obj': use .stl or .off\n");
+  EXPECT_EQ(r.err,
+            "--output: error: unknown output format '.obj': use .stl, .off or "
+            ".scad\n");
   { std::ofstream(dir_ / "empty.ls") << "\u03C9: A+B\n"; }
   const auto empty = run_command(lsolid() + " empty.ls", dir_);
   EXPECT_EQ(empty.exit_code, 3);

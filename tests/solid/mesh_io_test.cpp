@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "lsolid/errors.hpp"
 #include "support/mesh_checks.hpp"
@@ -47,6 +49,32 @@ TEST_F(MeshIo, ChoosesTheFormatByExtension) {
   EXPECT_EQ(format_for("x.stl", true), MeshFormat::StlAscii);
   EXPECT_EQ(format_for("x.off"), MeshFormat::Off);
   EXPECT_THROW((void)format_for("x.obj"), IoError);
+}
+
+TEST_F(MeshIo, WritesAnOpenScadModuleWithClockwiseFaces) {
+  const TriangleMesh box = box_mesh({0, 0, 0}, {1, 2, 3.5});
+  EXPECT_EQ(format_for("x.scad"), MeshFormat::Scad);
+  write_mesh(box, dir_ / "3d-box.scad", MeshFormat::Scad);
+  std::ifstream in(dir_ / "3d-box.scad");
+  const std::string text((std::istreambuf_iterator<char>(in)),
+                         std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("module model_3d_box() {\n  polyhedron(points = [\n"),
+            std::string::npos);
+  EXPECT_NE(text.find("    [1, 0, 0],\n"), std::string::npos);
+  EXPECT_NE(text.find("    [1, 2, 3.5]\n  ], faces"), std::string::npos);
+  EXPECT_EQ(text.substr(text.size() - 16), "model_3d_box();\n");
+  // The faces, read back, are ours with the last two points swapped.
+  const std::size_t faces = text.find("faces = [\n");
+  ASSERT_NE(faces, std::string::npos);
+  std::istringstream list(text.substr(faces + 10));
+  for (const auto& t : box.triangles) {
+    char open = 0, comma = 0;
+    std::uint32_t a = 0, b = 0, c = 0;
+    list >> open >> a >> comma >> b >> comma >> c;
+    EXPECT_EQ(open, '[');
+    EXPECT_EQ((std::array<std::uint32_t, 3>{a, c, b}), t);
+    list.ignore(4, '\n');
+  }
 }
 
 TEST_F(MeshIo, LeavesNothingBehindWhenWritingFails) {

@@ -9,10 +9,15 @@
 namespace lsolid {
 
 /// File formats lsolid reads or writes.
-enum class MeshFormat { StlBinary, StlAscii, Off };
+enum class MeshFormat {
+  StlBinary,
+  StlAscii,
+  Off,
+  Scad,  ///< an OpenSCAD module around one polyhedron(); written only
+};
 
-/// The format a path's extension names (`.stl` binary, `.off`); `ascii`
-/// picks ASCII STL.
+/// The format a path's extension names (`.stl` binary, `.off`, `.scad`);
+/// `ascii` picks ASCII STL.
 /// @throws IoError for any other extension.
 [[nodiscard]] MeshFormat format_for(const std::filesystem::path& path,
                                     bool ascii = false);

@@ -4,8 +4,11 @@
 // Meshing the skeleton into few, well-conditioned boolean operands
 // (shared/reference/geometry-and-printing.md §7): one swept tube per
 // unbranched chain, with rings shared between segments and mitred at bends,
-// so that no internal caps exist; joints that enclose the end caps of tubes
-// meeting at a node, so that no caps coincide; plates for leaves. Ring
+// so that no internal caps exist; branch points meshed directly as the
+// convex hull of the rings of the tubes that meet there (B-Mesh, Ji et al.
+// 2010; SQM, Bærentzen et al. 2012), stitched to the tubes, so that a tree
+// needs no boolean at all; joints that enclose the end caps of tubes where a
+// hull does not fit, so that no caps coincide; plates for leaves. Ring
 // frames are parallel-transported along a chain (rotation-minimising, as in
 // Wang et al. 2008's double reflection, here by the equivalent minimal
 // rotation per bend), and each part gets its own ring phase, so that
@@ -40,7 +43,7 @@ constexpr double kPathClearance =
     2.5;  // half a turn of radius 1.25 r, and more
 // Hull junctions (see plan_hull).
 constexpr double kJunctionMargin = 0.05;     // of the widest radius
-constexpr double kJunctionMinOffset = 0.5;   // of the widest radius
+constexpr double kJunctionMinOffset = 0.5;   // of the tube's own radius
 constexpr double kJunctionMinSpread = 1e-3;  // 1 - cos of the closest pair
 constexpr int kMaxRounds = 8;
 constexpr double kOnAxis = 0.1;  // of the stem radius: a leaf starts there
@@ -714,7 +717,6 @@ class PartBuilder {
         piece.triangles.push_back({v(j, i), v(j + 1, i + 1), v(j + 1, i)});
       }
     }
-    const auto self = static_cast<std::int32_t>(pieces_.size());
     if (start_hull >= 0) {
       Ring r;
       for (int i = 0; i < m; ++i) r.vertices.push_back(v(0, i));
@@ -738,7 +740,6 @@ class PartBuilder {
     piece.label = front == back
                       ? fmt::format("tube of segment {}", front)
                       : fmt::format("tube of segments {}-{}", front, back);
-    (void)self;
     pieces_.push_back(std::move(piece));
     ++set_.tubes;
   }

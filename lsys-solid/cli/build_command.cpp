@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -39,8 +40,9 @@ void print_report(const SolidReport& r, bool united) {
   }
   if (r.placement.has_base) {
     fmt::print(
-        "base: a disc of {:.1f} mm radius and {:.1f} mm under a foot {:.1f} mm "
-        "wide\n",
+        "base: a disc of {:.1f} mm radius, {:.1f} mm thick, under a foot "
+        "{:.1f} "
+        "mm wide\n",
         r.placement.base_radius_mm, r.placement.base_thickness_mm,
         r.placement.footprint_mm);
   }
@@ -78,8 +80,14 @@ void print_report(const SolidReport& r, bool united) {
 std::string json_string(const std::string& s) {
   std::string out = "\"";
   for (const char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      out += fmt::format("\\u{:04x}", static_cast<int>(c));
+    } else {
+      out += c;
+    }
   }
   return out + "\"";
 }
@@ -137,11 +145,24 @@ int run_build(const BuildCommand& command) {
                    "': use .stl, .off or .scad"});
   }
   const std::filesystem::path preview = command.preview;
-  if (!preview.empty() && preview.extension() != ".png") {
+  std::string preview_ext = preview.extension().string();
+  for (char& c : preview_ext) {
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  if (!preview.empty() && preview_ext != ".png") {
     throw lsys::ParseError(lsys::Diagnostic{
         .file = "--preview",
         .message = "a preview is a PNG: name it FILE.png, not '" +
                    preview.string() + "'"});
+  }
+  // Outputs go into folders that exist, checked before the long work.
+  for (const std::filesystem::path& target : {output, preview}) {
+    if (target.empty()) continue;
+    const std::filesystem::path folder =
+        target.has_parent_path() ? target.parent_path() : ".";
+    if (!std::filesystem::is_directory(folder)) {
+      throw IoError(target.string() + ": no folder " + folder.string());
+    }
   }
   std::optional<glm::dvec3> bed;
   if (command.bed) bed = parse_bed_mm(*command.bed, "--bed");
@@ -180,8 +201,11 @@ int run_build(const BuildCommand& command) {
                over.needs_supports ? "supports needed" : "no supports needed");
   }
   const glm::dvec3 size = solid.report.validation.bounds.size();
+  // The report prints sizes to 0.01 mm; what fits as printed fits.
+  constexpr double kSlack = 1e-3;
   const bool fits =
-      !bed || (size.x <= bed->x && size.y <= bed->y && size.z <= bed->z);
+      !bed || (size.x <= bed->x + kSlack && size.y <= bed->y + kSlack &&
+               size.z <= bed->z + kSlack);
   if (text && bed) {
     if (fits) {
       fmt::print("bed: fits {} x {} x {} mm\n", bed->x, bed->y, bed->z);

@@ -170,14 +170,12 @@ glm::vec3 facet_normal(const TriangleMesh& mesh,
 }
 
 // An OpenSCAD identifier from a file name: `abop-1.25-bush` gives
-// `abop_1_25_bush`.
+// `lsolid_abop_1_25_bush`. The prefix keeps it clear of OpenSCAD's keywords
+// (`for`, `module`) and built-in modules (`cube`, `polyhedron`).
 std::string scad_module_name(const std::filesystem::path& path) {
-  std::string name = path.stem().string();
+  std::string name = "lsolid_" + path.stem().string();
   for (char& c : name) {
     if (std::isalnum(static_cast<unsigned char>(c)) == 0) c = '_';
-  }
-  if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0])) != 0) {
-    name.insert(0, "model_");
   }
   return name;
 }

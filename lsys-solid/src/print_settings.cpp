@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #include "lsolid/print_settings.hpp"
 
+#include <algorithm>
+
 #include "lsolid/units.hpp"
 #include "lsys/diagnostic.hpp"
 
@@ -45,7 +47,13 @@ PrintSettings resolve_print_settings(const lsys::Grammar& grammar,
   PrintSettings file;
   int sizes = 0;
   std::size_t second_size = 0;
+  std::vector<std::string> seen;
   for (const lsys::ExtraSetting& s : grammar.extra_settings) {
+    if (std::find(seen.begin(), seen.end(), s.key) != seen.end()) {
+      throw lsys::error_at(*grammar.source, s.offset,
+                           "'" + s.key + "' is set twice");
+    }
+    seen.push_back(s.key);
     if (s.key == "base") {
       try {
         file.base = parse_base(s.value, s.key);

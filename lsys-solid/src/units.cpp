@@ -5,7 +5,10 @@
 #include <array>
 #include <cctype>
 #include <charconv>
+#include <cmath>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "lsys/diagnostic.hpp"
 
@@ -29,8 +32,9 @@ double parse_length_mm(std::string_view text, const std::string& what) {
       {{"", 1.0}, {"mm", 1.0}, {"cm", 10.0}, {"in", 25.4}}};
   for (const auto& [name, factor] : kUnits) {
     if (unit != name) continue;
-    if (!(value > 0.0)) {
-      throw lsys::error_at(source, begin, "a length must be positive");
+    if (!(value > 0.0) || !std::isfinite(value)) {
+      throw lsys::error_at(source, begin,
+                           "a length must be a positive, finite number");
     }
     return value * factor;
   }
@@ -40,26 +44,35 @@ double parse_length_mm(std::string_view text, const std::string& what) {
 }
 
 glm::dvec3 parse_bed_mm(std::string_view text, const std::string& what) {
-  std::size_t unit_at = text.size();
+  // Three lengths joined by `x`; a unit on the last one applies to those
+  // without their own (`220x220x250mm`, `22cmx22cmx25cm`).
+  std::vector<std::string> sides(1);
+  for (const char c : text) {
+    if (c == 'x' || c == 'X') {
+      sides.emplace_back();
+    } else {
+      sides.back() += c;
+    }
+  }
+  if (sides.size() != 3) {
+    throw lsys::ParseError(lsys::Diagnostic{
+        .file = what,
+        .message = "a bed is WIDTHxDEPTHxHEIGHT, such as 220x220x250mm"});
+  }
+  std::size_t unit_at = sides[2].size();
   while (unit_at > 0 &&
-         std::isalpha(static_cast<unsigned char>(text[unit_at - 1])) != 0) {
+         std::isalpha(static_cast<unsigned char>(sides[2][unit_at - 1])) != 0) {
     --unit_at;
   }
-  const std::string unit(text.substr(unit_at));
-  const std::string_view sides = text.substr(0, unit_at);
+  const std::string unit = sides[2].substr(unit_at);
   glm::dvec3 out(0.0);
-  std::size_t start = 0;
   for (int i = 0; i < 3; ++i) {
-    const std::size_t x = i < 2 ? sides.find('x', start) : sides.size();
-    if (x == std::string_view::npos ||
-        (i == 2 && sides.find('x', start) != std::string_view::npos)) {
-      throw lsys::ParseError(lsys::Diagnostic{
-          .file = what,
-          .message = "a bed is WIDTHxDEPTHxHEIGHT, such as 220x220x250mm"});
+    std::string side = sides[static_cast<std::size_t>(i)];
+    if (side.empty() ||
+        std::isalpha(static_cast<unsigned char>(side.back())) == 0) {
+      side += unit;
     }
-    out[i] = parse_length_mm(std::string(sides.substr(start, x - start)) + unit,
-                             what);
-    start = x + 1;
+    out[i] = parse_length_mm(side, what);
   }
   return out;
 }

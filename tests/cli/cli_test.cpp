@@ -226,6 +226,30 @@ TEST_F(Build, IsQuietOrSpeaksJsonWhenAsked) {
   EXPECT_EQ(std::count(json.out.begin(), json.out.end(), '\n'), 1);
 }
 
+TEST_F(Build, RefusesAPrintSettingGivenTwice) {
+  {
+    std::ofstream(dir_ / "t.ls")
+        << "wall: 0.8mm\nbase: none\nwall: 2mm\n\u03C9: F\n";
+  }
+  const auto r = run_command(lsolid() + " t.ls", dir_);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err,
+            "t.ls:3:7: error: 'wall' is set twice\n"
+            "wall: 2mm\n"
+            "      ^\n");
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "t.stl"));
+}
+
+TEST_F(Build, ChecksTheOutputFoldersBeforeBuilding) {
+  std::filesystem::copy_file(kSource / "printables/branches-90.ls",
+                             dir_ / "b.ls");
+  const auto r = run_command(lsolid() + " b.ls --preview nowhere/b.png", dir_);
+  EXPECT_EQ(r.exit_code, 4);
+  EXPECT_EQ(r.err, "error: nowhere/b.png: no folder nowhere\n");
+  EXPECT_EQ(r.out, "");  // refused before the build
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "b.stl"));
+}
+
 TEST_F(Build, LeavesNothingBehindOnBadInput) {
   { std::ofstream(dir_ / "bad.ls") << "\u03C9: F\nF \u2192 F]\n"; }
   { std::ofstream(dir_ / "old.stl") << "keep me"; }
@@ -273,8 +297,9 @@ TEST_F(Build, ReadsPrintSettingsFromTheFile) {
   const auto disc = run_command(lsolid() + " h.ls --base disc", dir_);
   EXPECT_EQ(disc.exit_code, 0);
   EXPECT_NE(disc.out.find("base: a disc of "), std::string::npos);
-  EXPECT_NE(disc.out.find(" mm radius and 2.0 mm under a foot 1.0 mm wide\n"),
-            std::string::npos)
+  EXPECT_NE(
+      disc.out.find(" mm radius, 2.0 mm thick, under a foot 1.0 mm wide\n"),
+      std::string::npos)
       << disc.out;
   EXPECT_NE(disc.out.find(", from ("), std::string::npos);
   EXPECT_NE(disc.out.find(", 0.00)\n"), std::string::npos) << disc.out;

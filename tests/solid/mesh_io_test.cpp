@@ -58,11 +58,11 @@ TEST_F(MeshIo, WritesAnOpenScadModuleWithClockwiseFaces) {
   std::ifstream in(dir_ / "3d-box.scad");
   const std::string text((std::istreambuf_iterator<char>(in)),
                          std::istreambuf_iterator<char>());
-  EXPECT_NE(text.find("module model_3d_box() {\n  polyhedron(points = [\n"),
+  EXPECT_NE(text.find("module lsolid_3d_box() {\n  polyhedron(points = [\n"),
             std::string::npos);
   EXPECT_NE(text.find("    [1, 0, 0],\n"), std::string::npos);
   EXPECT_NE(text.find("    [1, 2, 3.5]\n  ], faces"), std::string::npos);
-  EXPECT_EQ(text.substr(text.size() - 16), "model_3d_box();\n");
+  EXPECT_EQ(text.substr(text.size() - 17), "lsolid_3d_box();\n");
   // The faces, read back, are ours with the last two points swapped.
   const std::size_t faces = text.find("faces = [\n");
   ASSERT_NE(faces, std::string::npos);

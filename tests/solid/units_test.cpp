@@ -28,12 +28,25 @@ TEST(Units, RejectsBadLengthsWithTheirColumn) {
   EXPECT_THROW((void)parse_length_mm("mm", "--wall"), lsys::ParseError);
   EXPECT_THROW((void)parse_length_mm("-1mm", "--wall"), lsys::ParseError);
   EXPECT_THROW((void)parse_length_mm("0", "--wall"), lsys::ParseError);
+  for (const char* bad : {"inf", "nan", "infmm"}) {
+    try {
+      (void)parse_length_mm(bad, "--wall");
+      ADD_FAILURE() << bad;
+    } catch (const lsys::ParseError& e) {
+      EXPECT_EQ(e.diagnostic().message,
+                "a length must be a positive, finite number")
+          << bad;
+    }
+  }
 }
 
 TEST(Units, ReadsABedAsThreeLengthsWithOneUnit) {
   EXPECT_EQ(parse_bed_mm("220x220x250mm", "--bed"), glm::dvec3(220, 220, 250));
   EXPECT_EQ(parse_bed_mm("25x21x21cm", "--bed"), glm::dvec3(250, 210, 210));
   EXPECT_EQ(parse_bed_mm("180x180x180", "--bed"), glm::dvec3(180, 180, 180));
+  EXPECT_EQ(parse_bed_mm("22cmx220mmx25cm", "--bed"),
+            glm::dvec3(220, 220, 250));
+  EXPECT_EQ(parse_bed_mm("220X220X250", "--bed"), glm::dvec3(220, 220, 250));
   for (const char* bad : {"220x220", "220x220x250x1", "axbxcmm", "1x0x1"}) {
     EXPECT_THROW((void)parse_bed_mm(bad, "--bed"), lsys::ParseError) << bad;
   }

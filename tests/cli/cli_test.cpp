@@ -115,6 +115,11 @@ class Build : public ::testing::Test {
     std::filesystem::create_directories(dir_);
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
+  // Copies printables/NAME.ls into the test's folder as AS.
+  void use_printable(const std::string& name, const std::string& as) const {
+    std::filesystem::copy_file(kSource / "printables" / (name + ".ls"),
+                               dir_ / as);
+  }
   std::filesystem::path dir_;
 };
 
@@ -139,8 +144,7 @@ TEST_F(Build, WritesAPrintableStlAndReports) {
 }
 
 TEST_F(Build, WritesBesideTheInputByDefaultAndTakesOff) {
-  std::filesystem::copy_file(kSource / "printables/branches-90.ls",
-                             dir_ / "b.ls");
+  use_printable("branches-90", "b.ls");
   EXPECT_EQ(run_command(lsolid() + " b.ls", dir_).exit_code, 0);
   EXPECT_TRUE(std::filesystem::exists(dir_ / "b.stl"));
   EXPECT_EQ(run_command(lsolid() + " b.ls -o b.off", dir_).exit_code, 0);
@@ -151,8 +155,7 @@ TEST_F(Build, WritesBesideTheInputByDefaultAndTakesOff) {
 }
 
 TEST_F(Build, RendersAPreviewBesideTheMesh) {
-  std::filesystem::copy_file(kSource / "printables/branches-90.ls",
-                             dir_ / "b.ls");
+  use_printable("branches-90", "b.ls");
   const auto r = run_command(lsolid() + " b.ls --preview b.png", dir_);
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_NE(r.out.find("rendered b.png\n"), std::string::npos);
@@ -166,8 +169,7 @@ TEST_F(Build, RendersAPreviewBesideTheMesh) {
 }
 
 TEST_F(Build, RefusesAnUnknownBase) {
-  std::filesystem::copy_file(kSource / "printables/branches-90.ls",
-                             dir_ / "b.ls");
+  use_printable("branches-90", "b.ls");
   const auto r = run_command(lsolid() + " b.ls --base wobbly", dir_);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err,
@@ -182,8 +184,7 @@ TEST_F(Build, RefusesAnUnknownBase) {
 }
 
 TEST_F(Build, RefusesAModelThatDoesNotFitTheBedUnlessForced) {
-  std::filesystem::copy_file(kSource / "printables/hilbert-cube.ls",
-                             dir_ / "h.ls");  // 60 mm on each side
+  use_printable("hilbert-cube", "h.ls");  // 60 mm on each side
   const auto small = run_command(lsolid() + " h.ls --bed 50x50x50mm", dir_);
   EXPECT_EQ(small.exit_code, 3);
   EXPECT_NE(small.out.find("bed: 60.0 x 60.0 x 60.0 mm does not fit 50 x 50 x "
@@ -204,8 +205,7 @@ TEST_F(Build, RefusesAModelThatDoesNotFitTheBedUnlessForced) {
 }
 
 TEST_F(Build, IsQuietOrSpeaksJsonWhenAsked) {
-  std::filesystem::copy_file(kSource / "printables/hilbert-cube.ls",
-                             dir_ / "h.ls");
+  use_printable("hilbert-cube", "h.ls");
   const auto quiet = run_command(lsolid() + " h.ls -q", dir_);
   EXPECT_EQ(quiet.exit_code, 0);
   EXPECT_EQ(quiet.out, "");
@@ -241,8 +241,7 @@ TEST_F(Build, RefusesAPrintSettingGivenTwice) {
 }
 
 TEST_F(Build, ChecksTheOutputFoldersBeforeBuilding) {
-  std::filesystem::copy_file(kSource / "printables/branches-90.ls",
-                             dir_ / "b.ls");
+  use_printable("branches-90", "b.ls");
   const auto r = run_command(lsolid() + " b.ls --preview nowhere/b.png", dir_);
   EXPECT_EQ(r.exit_code, 4);
   EXPECT_EQ(r.err, "error: nowhere/b.png: no folder nowhere\n");
@@ -265,8 +264,7 @@ TEST_F(Build, LeavesNothingBehindOnBadInput) {
 }
 
 TEST_F(Build, RefusesUnknownFormatsAndEmptyModels) {
-  std::filesystem::copy_file(kSource / "printables/branches-90.ls",
-                             dir_ / "b.ls");
+  use_printable("branches-90", "b.ls");
   const auto r = run_command(lsolid() + " b.ls -o b.obj", dir_);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err,

@@ -112,6 +112,19 @@ Placement place_on_bed(std::vector<Part>& parts, Base base, double wall_mm,
   const int m =
       std::clamp(static_cast<int>(std::ceil(std::numbers::pi / step)), 32, 256);
   parts.push_back(Part{disc(centre, radius, thickness, m), "base disc"});
+  // Centre the model with its base.
+  Box all;
+  for (const Part& part : parts) {
+    const Box b = bounds(part.mesh);
+    all.min = glm::min(all.min, b.min);
+    all.max = glm::max(all.max, b.max);
+  }
+  const glm::dvec3 shift(-(all.min.x + all.max.x) / 2.0,
+                         -(all.min.y + all.max.y) / 2.0, 0.0);
+  for (Part& part : parts) {
+    for (glm::dvec3& p : part.mesh.vertices) p += shift;
+  }
+  placement.moved_by_mm += shift;
   placement.has_base = true;
   placement.base_radius_mm = radius;
   placement.base_thickness_mm = thickness;

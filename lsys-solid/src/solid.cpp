@@ -2,7 +2,10 @@
 // SPDX-License-Identifier: MIT
 #include "lsolid/solid.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <glm/common.hpp>
 
 #include "lsolid/parts.hpp"
 #include "lsolid/rounding.hpp"
@@ -10,6 +13,10 @@
 
 namespace lsolid {
 namespace {
+
+constexpr int kSizePasses = 4;
+constexpr double kSizeTolerance = 0.002;
+constexpr double kDefaultSizeMm = 100.0;  // as scale_to_print's default
 
 class Stopwatch {
  public:
@@ -45,11 +52,35 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   report.seconds.skeleton = clock.lap();
   tell("parts", 0.0);
 
-  const ScaledSkeleton scaled = scale_to_print(skeleton, options.print);
+  // scale_to_print sizes the skeleton with round tubes; mitres, joints and
+  // hulls reach a little beyond, so the parts are measured and the scale
+  // corrected until the size asked for holds within 0.2%.
+  PrintSettings print = options.print;
+  ScaledSkeleton scaled;
+  PartSet parts;
+  for (int pass = 0; pass < kSizePasses; ++pass) {
+    scaled = scale_to_print(skeleton, print);
+    parts = build_parts(scaled.skeleton, {.wall_mm = print.wall_mm,
+                                          .tolerance_mm = print.tolerance_mm});
+    if (options.print.scale_mm_per_unit || parts.parts.empty()) break;
+    Box box;
+    for (const Part& part : parts.parts) {
+      const Box b = bounds(part.mesh);
+      box.min = glm::min(box.min, b.min);
+      box.max = glm::max(box.max, b.max);
+    }
+    const glm::dvec3 extent = box.size();
+    const double actual = options.print.height_mm
+                              ? extent.z
+                              : std::max({extent.x, extent.y, extent.z});
+    const double wanted = options.print.height_mm.value_or(
+        options.print.size_mm.value_or(kDefaultSizeMm));
+    if (std::fabs(actual - wanted) <= kSizeTolerance * wanted) break;
+    print.scale_mm_per_unit = scaled.mm_per_unit * wanted / actual;
+    print.height_mm.reset();
+    print.size_mm.reset();
+  }
   report.mm_per_unit = scaled.mm_per_unit;
-  PartSet parts = build_parts(scaled.skeleton,
-                              {.wall_mm = options.print.wall_mm,
-                               .tolerance_mm = options.print.tolerance_mm});
   report.tubes = parts.tubes;
   report.junctions = parts.junctions;
   report.joints = parts.joints;

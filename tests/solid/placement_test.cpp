@@ -57,11 +57,17 @@ TEST(Placement, StandsATallThinModelOnADisc) {
   EXPECT_DOUBLE_EQ(bounds(parts[0].mesh).min.z, 0.8);
   // The centre of mass (of the volumes: stick 50, arm 20, at x = 0.5 and
   // 10 before centring) lies inside the disc, with room to spare.
-  const double balance_x = (50 * 0.5 + 20 * 10.0) / 70.0 - 10.0;
-  const double foot_x = 0.5 - 10.0;
+  // The disc is centred under the foot (the stick), and the whole, disc
+  // included, on the origin.
+  const Box stick = bounds(parts[0].mesh);
+  const double foot_x = (stick.min.x + stick.max.x) / 2.0;
+  const double balance_x = foot_x + (50 * 0.5 + 20 * 10.0) / 70.0 - 0.5;
   const double radius = (disc.max.x - disc.min.x) / 2.0;
   EXPECT_NEAR((disc.min.x + disc.max.x) / 2.0, foot_x, 1e-9);
   EXPECT_GT(radius, 1.4 * std::fabs(balance_x - foot_x));
+  const Box all = bounds_of(parts);
+  EXPECT_NEAR(all.min.x, -all.max.x, 1e-9);
+  EXPECT_NEAR(all.min.y, -all.max.y, 1e-9);
   expect_printable(parts.back().mesh);
   expect_printable(union_parts(parts).mesh);
 }

@@ -66,6 +66,22 @@ TEST(Solid, FitsTheLongestSideAndClampsToTheWall) {
   EXPECT_NEAR(thin.report.validation.bounds.size().z, 50.0, 0.01);
 }
 
+TEST(Solid, HoldsTheSizeAskedForWithJointsAndMitres) {
+  // Koch's snowflake: sharp bends break chains and add joints, which reach
+  // beyond the round tubes the skeleton is scaled with.
+  const lsys::Grammar koch = parse(
+      "n=2, \u03B4=60\u00B0\nwidth: 0.2\n\u03C9: F--F--F\nF \u2192 F+F--F+F\n");
+  for (const double size : {40.0, 100.0}) {
+    const Solid s =
+        build_solid(koch, {.print = {.size_mm = size, .base = Base::None}});
+    const glm::dvec3 extent = s.report.validation.bounds.size();
+    EXPECT_NEAR(std::max({extent.x, extent.y, extent.z}), size, 0.002 * size);
+  }
+  const Solid tall =
+      build_solid(koch, {.print = {.height_mm = 30.0, .base = Base::None}});
+  EXPECT_NEAR(tall.report.validation.bounds.size().z, 30.0, 0.06);
+}
+
 TEST(Solid, TellsItsProgressStageByStage) {
   std::vector<std::string> stages;
   double last_union = -1.0;

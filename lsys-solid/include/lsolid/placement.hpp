@@ -20,8 +20,8 @@ struct Placement {
   double footprint_mm = 0.0;
 };
 
-/// Puts the parts on the bed: centred on the origin in X and Y, their
-/// lowest point at z = 0 (the union's lowest point is a part's vertex, so
+/// Puts the parts on the bed: centred on the origin in X and Y (with the
+/// base, if any), their lowest point at z = 0 (the union's lowest point is a part's vertex, so
 /// the written mesh rests there too). With `Base::Disc`, or with
 /// `Base::Auto` where the model would stand on a footprint narrower (in
 /// either direction) than a fifth of its height, a disc is added as a part

@@ -18,6 +18,9 @@ struct UnionStats {
   /// groups with disjoint boxes: joined without a boolean.
   std::size_t concatenations = 0;
   std::size_t retries = 0;  ///< unions retried after a perturbation
+  /// Unions that still failed and were redone with one operand's parts in
+  /// two halves.
+  std::size_t splits = 0;
   /// Unions whose new vertices could all be rounded to doubles before the
   /// next union (see design.md).
   std::size_t rounded = 0;
@@ -34,7 +37,9 @@ struct UnionResult {
 /// meet are batched into layers (concatenated, no boolean), filled greedily
 /// in Z-order of their boxes; the layers are united smallest first, and
 /// pairs whose boxes do not overlap are joined without a boolean. A union
-/// that fails is retried after translating one operand by 10⁻⁵ mm, twice.
+/// that fails is retried after translating one operand by 10⁻⁵ mm, twice;
+/// if it still fails, the operand with more parts is united again in two
+/// halves that are merged one after the other, recursively.
 /// New points are rounded to doubles between unions where that keeps the
 /// mesh valid; the result is rounded to doubles at the end.
 /// @pre every part is closed and outward-oriented.

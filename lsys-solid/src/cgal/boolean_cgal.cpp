@@ -349,9 +349,48 @@ class Unioner {
       a.parts.insert(a.parts.end(), b.parts.begin(), b.parts.end());
       return a;
     }
+    // A shift moves a whole operand, which may hold many parts; where that
+    // does not help, the operand with more parts is united again in two
+    // halves, each merged on its own, until the failure is down to two
+    // parts that a shift of one of them cannot separate.
+    if (a.parts.size() > 1 || b.parts.size() > 1) {
+      ++stats_.splits;
+      Group& split = b.parts.size() >= a.parts.size() ? b : a;
+      Group& other = b.parts.size() >= a.parts.size() ? a : b;
+      const auto middle = split.parts.begin() +
+                          static_cast<std::ptrdiff_t>(split.parts.size() / 2);
+      Group first =
+          unite(std::vector<std::size_t>(split.parts.begin(), middle));
+      Group second = unite(std::vector<std::size_t>(middle, split.parts.end()));
+      Group merged = merge(std::move(other), std::move(first), round_points);
+      return merge(std::move(merged), std::move(second), round_points);
+    }
     throw GeometryError(
         "the union failed for " + describe(a) + " with " + describe(b) +
         (last_failure_.empty() ? "" : " (" + last_failure_ + ")"));
+  }
+
+  // The union of some parts, each its own operand, smallest first.
+  Group unite(const std::vector<std::size_t>& ids) {
+    std::vector<Group> groups;
+    for (const std::size_t i : ids) {
+      groups.push_back(Group{to_surface_mesh<ExactMesh>(parts_[i].mesh),
+                             box_of(parts_[i].mesh),
+                             {i}});
+    }
+    const auto larger = [](const Group& x, const Group& y) {
+      return x.mesh.number_of_faces() > y.mesh.number_of_faces();
+    };
+    std::make_heap(groups.begin(), groups.end(), larger);
+    while (groups.size() > 1) {
+      std::pop_heap(groups.begin(), groups.end(), larger);
+      Group x = std::move(groups.back());
+      groups.pop_back();
+      std::pop_heap(groups.begin(), groups.end(), larger);
+      groups.back() = merge(std::move(x), std::move(groups.back()), true);
+      std::push_heap(groups.begin(), groups.end(), larger);
+    }
+    return std::move(groups.front());
   }
 
   std::string describe(const Group& g) const {

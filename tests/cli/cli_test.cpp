@@ -223,6 +223,12 @@ TEST_F(Build, IsQuietOrSpeaksJsonWhenAsked) {
   EXPECT_NE(json.out.find("\"base\": null,"), std::string::npos);
   EXPECT_NE(json.out.find("\"fits_bed\": null,"), std::string::npos);
   EXPECT_EQ(json.out.back(), '\n');
+  // Names are JSON strings: quotes and backslashes escaped.
+  const auto quoted =
+      run_command(lsolid() + " h.ls --json -o 'q\"u\\o.stl'", dir_);
+  EXPECT_EQ(quoted.exit_code, 0);
+  const std::string quoted_head = "{\"output\": \"q\\\"u\\\\o.stl\", ";
+  EXPECT_EQ(quoted.out.substr(0, quoted_head.size()), quoted_head);
   EXPECT_EQ(std::count(json.out.begin(), json.out.end(), '\n'), 1);
 }
 

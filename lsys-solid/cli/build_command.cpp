@@ -144,6 +144,12 @@ int run_build(const BuildCommand& command) {
         .message = "unknown output format '" + output.extension().string() +
                    "': use .stl, .off or .scad"});
   }
+  if (command.ascii && format != MeshFormat::StlAscii) {
+    throw lsys::ParseError(lsys::Diagnostic{
+        .file = "--ascii",
+        .message = "--ascii is for STL; '" + output.filename().string() +
+                   "' is not an STL file"});
+  }
   const std::filesystem::path preview = command.preview;
   std::string preview_ext = preview.extension().string();
   for (char& c : preview_ext) {

@@ -45,11 +45,13 @@ int main(int argc, char** argv) {
       "-o,--output", build.output,
       "output file: .stl (binary), .off or .scad (OpenSCAD); default FILE.stl");
   app.add_flag("--ascii", build.ascii, "write ASCII STL");
-  app.add_option("--bed", build.bed,
-                 "the printer's build volume, e.g. 220x220x250mm: refuse to "
-                 "write a model that does not fit");
+  auto* bed = app.add_option(
+      "--bed", build.bed,
+      "the printer's build volume, e.g. 220x220x250mm: refuse to write a "
+      "model that does not fit");
   app.add_flag("--force", build.force,
-               "write the model even if it does not fit the --bed");
+               "write the model even if it does not fit the --bed")
+      ->needs(bed);
   app.add_flag("-q,--quiet", build.quiet,
                "print no report (errors still go to standard error)");
   app.add_flag("--json", build.json,

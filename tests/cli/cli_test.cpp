@@ -255,6 +255,20 @@ TEST_F(Build, ChecksTheOutputFoldersBeforeBuilding) {
   EXPECT_FALSE(std::filesystem::exists(dir_ / "b.stl"));
 }
 
+TEST_F(Build, RefusesOptionsThatWouldBeIgnored) {
+  use_printable("branches-90", "b.ls");
+  const auto ascii = run_command(lsolid() + " b.ls --ascii -o b.off", dir_);
+  EXPECT_EQ(ascii.exit_code, 2);
+  EXPECT_EQ(ascii.err,
+            "--ascii: error: --ascii is for STL; 'b.off' is not an STL file\n");
+  const auto force = run_command(lsolid() + " b.ls --force", dir_);
+  EXPECT_EQ(force.exit_code, 2);
+  EXPECT_NE(force.err.find("--force requires --bed"), std::string::npos)
+      << force.err;
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "b.off"));
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "b.stl"));
+}
+
 TEST_F(Build, LeavesNothingBehindOnBadInput) {
   { std::ofstream(dir_ / "bad.ls") << "\u03C9: F\nF \u2192 F]\n"; }
   { std::ofstream(dir_ / "old.stl") << "keep me"; }

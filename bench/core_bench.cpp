@@ -46,18 +46,19 @@ void derive_only(benchmark::State& state, const std::string& file, int n) {
   const lsys::Grammar grammar = load(file);
   std::size_t modules = 0;
   for (auto _ : state) {
-    lsys::Derivation d(grammar, {.derivation_length = n,
-                                 .max_segments = 1'000'000'000});
+    lsys::Derivation d(grammar,
+                       {.derivation_length = n, .max_segments = 1'000'000'000});
     lsys::ModuleString chunk;
     modules = 0;
     while (d.next(chunk)) modules += chunk.size();
     benchmark::DoNotOptimize(modules);
   }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * modules));
+  state.SetItemsProcessed(
+      static_cast<std::int64_t>(state.iterations() * modules));
   state.counters["modules"] = static_cast<double>(modules);
   state.counters["peak_rss_MiB"] = peak_rss_mib([&] {
-    lsys::Derivation d(grammar, {.derivation_length = n,
-                                 .max_segments = 1'000'000'000});
+    lsys::Derivation d(grammar,
+                       {.derivation_length = n, .max_segments = 1'000'000'000});
     lsys::ModuleString chunk;
     while (d.next(chunk)) benchmark::DoNotOptimize(chunk.size());
   });
@@ -78,7 +79,8 @@ void derive_and_walk(benchmark::State& state, const std::string& file, int n) {
     segments = s.segments.size();
     benchmark::DoNotOptimize(segments);
   }
-  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * modules));
+  state.SetItemsProcessed(
+      static_cast<std::int64_t>(state.iterations() * modules));
   state.counters["modules"] = static_cast<double>(modules);
   state.counters["segments"] = static_cast<double>(segments);
   state.counters["peak_rss_MiB"] = peak_rss_mib([&] {

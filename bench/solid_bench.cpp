@@ -21,7 +21,8 @@ namespace {
 
 lsys::Grammar load(const std::string& name) {
   return lsys::parse_grammar(
-      lsys::load_source(std::filesystem::path(LSOLID_SOURCE_DIR) / "printables" / name),
+      lsys::load_source(std::filesystem::path(LSOLID_SOURCE_DIR) /
+                        "printables" / name),
       {.extra_settings = lsolid::print_setting_names()});
 }
 
@@ -54,7 +55,8 @@ void build(benchmark::State& state, const std::string& file, int n) {
   state.counters["parts"] =
       static_cast<double>(report.tubes + report.joints + report.plates);
   state.counters["booleans"] = static_cast<double>(report.union_stats.booleans);
-  state.counters["triangles"] = static_cast<double>(report.validation.triangles);
+  state.counters["triangles"] =
+      static_cast<double>(report.validation.triangles);
   state.counters["skeleton_s"] = report.seconds.skeleton;
   state.counters["parts_s"] = report.seconds.parts;
   state.counters["union_s"] = report.seconds.unite;
@@ -64,13 +66,17 @@ void build(benchmark::State& state, const std::string& file, int n) {
 }
 
 BENCHMARK_CAPTURE(build, hilbert_n3, "hilbert-cube.ls", 3)
-    ->Unit(benchmark::kSecond)->Iterations(1);
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
 BENCHMARK_CAPTURE(build, bush_n5, "abop-1.25-bush.ls", 5)
-    ->Unit(benchmark::kSecond)->Iterations(1);
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
 BENCHMARK_CAPTURE(build, bush_n6, "abop-1.25-bush.ls", 6)
-    ->Unit(benchmark::kSecond)->Iterations(1);
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
 BENCHMARK_CAPTURE(build, bush_n7, "abop-1.25-bush.ls", 7)
-    ->Unit(benchmark::kSecond)->Iterations(1);
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
 
 }  // namespace
 

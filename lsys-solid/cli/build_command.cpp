@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "commands.hpp"
+#include "json.hpp"
 #include "lsolid/errors.hpp"
 #include "lsolid/mesh_io.hpp"
 #include "lsolid/overhang.hpp"
@@ -75,25 +76,6 @@ void print_report(const SolidReport& r, bool united) {
     for (const std::string& problem : v.problems())
       fmt::print("  {}\n", problem);
   }
-}
-
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      out += fmt::format("\\u{:04x}", static_cast<int>(c));
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-
-std::string json_point(const glm::dvec3& p) {
-  return fmt::format("[{}, {}, {}]", p.x, p.y, p.z);
 }
 
 // The report as one JSON object, for scripts (--json).

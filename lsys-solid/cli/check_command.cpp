@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "commands.hpp"
+#include "json.hpp"
 #include "lsolid/errors.hpp"
 #include "lsolid/mesh_io.hpp"
 #include "lsolid/validate.hpp"
@@ -14,14 +15,11 @@ namespace {
 
 std::string json_number(double v) { return fmt::format("{}", v); }
 
-std::string json_point(const glm::dvec3& p) {
-  return fmt::format("[{}, {}, {}]", p.x, p.y, p.z);
-}
-
 std::string json_report(const ValidationReport& r) {
   std::string problems;
   for (const std::string& p : r.problems()) {
-    problems += (problems.empty() ? "\"" : ", \"") + p + "\"";
+    if (!problems.empty()) problems += ", ";
+    append_json_string(problems, p);
   }
   const auto optional = [](bool known, const std::string& value) {
     return known ? value : std::string("null");

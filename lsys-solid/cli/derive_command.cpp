@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "json.hpp"
 #include "lsolid/units.hpp"
 #include "lsys/module_string.hpp"
 #include "lsys/parser.hpp"
@@ -12,27 +13,6 @@
 #include "output.hpp"
 
 namespace lsolid::cli {
-namespace {
-
-void append_json_string(std::string& out, const std::string& text) {
-  out += '"';
-  for (const char c : text) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20U) {
-      static constexpr char kHex[] = "0123456789abcdef";
-      out += "\\u00";
-      out += kHex[(c >> 4) & 0xF];
-      out += kHex[c & 0xF];
-    } else {
-      out += c;
-    }
-  }
-  out += '"';
-}
-
-}  // namespace
 
 void add_grammar_options(CLI::App& command, GrammarInput& input, bool with_roll,
                          bool is_file_required) {

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <unordered_map>
 
+#include "union_find.hpp"
 #include "vertex_key.hpp"
 
 namespace lsolid {
@@ -61,12 +62,7 @@ void remove_unused_vertices(TriangleMesh& mesh) {
 std::size_t remove_cavities(TriangleMesh& mesh) {
   // Shells: triangles joined through shared edges.
   const std::size_t n = mesh.triangles.size();
-  std::vector<std::uint32_t> parent(n);
-  for (std::uint32_t i = 0; i < n; ++i) parent[i] = i;
-  const auto find = [&](std::uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  UnionFind shells(n);
   std::unordered_map<std::uint64_t, std::uint32_t> first_face;
   for (std::uint32_t f = 0; f < n; ++f) {
     const auto& t = mesh.triangles[f];
@@ -76,7 +72,7 @@ std::size_t remove_cavities(TriangleMesh& mesh) {
       const std::uint64_t key =
           (static_cast<std::uint64_t>(std::min(a, b)) << 32U) | std::max(a, b);
       const auto [it, inserted] = first_face.emplace(key, f);
-      if (!inserted) parent[find(f)] = find(it->second);
+      if (!inserted) shells.join(f, it->second);
     }
   }
   // Volumes are summed about a vertex of each shell, not the origin, so
@@ -85,9 +81,10 @@ std::size_t remove_cavities(TriangleMesh& mesh) {
   std::unordered_map<std::uint32_t, glm::dvec3> origin;
   for (std::uint32_t f = 0; f < n; ++f) {
     const auto& t = mesh.triangles[f];
+    const std::uint32_t shell = shells.find(f);
     const glm::dvec3 o =
-        origin.try_emplace(find(f), mesh.vertices[t[0]]).first->second;
-    six_volume[find(f)] +=
+        origin.try_emplace(shell, mesh.vertices[t[0]]).first->second;
+    six_volume[shell] +=
         glm::dot(mesh.vertices[t[0]] - o,
                  glm::cross(mesh.vertices[t[1]] - o, mesh.vertices[t[2]] - o));
   }
@@ -101,7 +98,8 @@ std::size_t remove_cavities(TriangleMesh& mesh) {
   std::vector<std::array<std::uint32_t, 3>> kept;
   kept.reserve(n);
   for (std::uint32_t f = 0; f < n; ++f) {
-    if (six_volume[find(f)] >= kNoVolume) kept.push_back(mesh.triangles[f]);
+    if (six_volume[shells.find(f)] >= kNoVolume)
+      kept.push_back(mesh.triangles[f]);
   }
   mesh.triangles = std::move(kept);
   remove_unused_vertices(mesh);

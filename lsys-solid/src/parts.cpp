@@ -1122,6 +1122,16 @@ int tube_sides(double radius_mm, double tolerance_mm) {
   return std::clamp(static_cast<int>(std::ceil(kPi / step)), 6, 128);
 }
 
+Box bounds(const std::vector<Part>& parts) {
+  Box box;
+  for (const Part& part : parts) {
+    const Box b = bounds(part.mesh);
+    box.min = glm::min(box.min, b.min);
+    box.max = glm::max(box.max, b.max);
+  }
+  return box;
+}
+
 PartSet build_parts(const lsys::Skeleton& skeleton,
                     const PartOptions& options) {
   return PartBuilder(skeleton, options).build();

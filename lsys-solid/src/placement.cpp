@@ -42,18 +42,19 @@ TriangleMesh disc(const glm::dvec2& centre, double radius, double height,
   return mesh;
 }
 
+void translate(std::vector<Part>& parts, const glm::dvec3& by) {
+  for (Part& part : parts) {
+    for (glm::dvec3& p : part.mesh.vertices) p += by;
+  }
+}
+
 }  // namespace
 
 Placement place_on_bed(std::vector<Part>& parts, Base base, double wall_mm,
                        double tolerance_mm) {
   Placement placement;
-  Box box;
-  for (const Part& part : parts) {
-    const Box b = bounds(part.mesh);
-    box.min = glm::min(box.min, b.min);
-    box.max = glm::max(box.max, b.max);
-  }
   if (parts.empty()) return placement;
+  const Box box = bounds(parts);
   const glm::dvec3 move(-(box.min.x + box.max.x) / 2.0,
                         -(box.min.y + box.max.y) / 2.0, -box.min.z);
   placement.moved_by_mm = move;
@@ -102,28 +103,17 @@ Placement place_on_bed(std::vector<Part>& parts, Base base, double wall_mm,
   // The foot sinks half-way into the disc, so that no face of the model
   // lies in the disc's bottom plane.
   const glm::dvec3 lift(0.0, 0.0, thickness / 2.0);
-  for (Part& part : parts) {
-    for (glm::dvec3& p : part.mesh.vertices) p += lift;
-  }
+  translate(parts, lift);
   placement.moved_by_mm += lift;
   // Sides from the chord tolerance, as the tubes', but at least 32: a disc
   // is seen whole.
-  const double step = std::acos(std::max(-1.0, 1.0 - tolerance_mm / radius));
-  const int m =
-      std::clamp(static_cast<int>(std::ceil(std::numbers::pi / step)), 32, 256);
+  const int m = std::max(32, tube_sides(radius, tolerance_mm));
   parts.push_back(Part{disc(centre, radius, thickness, m), "base disc"});
   // Centre the model with its base.
-  Box all;
-  for (const Part& part : parts) {
-    const Box b = bounds(part.mesh);
-    all.min = glm::min(all.min, b.min);
-    all.max = glm::max(all.max, b.max);
-  }
+  const Box all = bounds(parts);
   const glm::dvec3 shift(-(all.min.x + all.max.x) / 2.0,
                          -(all.min.y + all.max.y) / 2.0, 0.0);
-  for (Part& part : parts) {
-    for (glm::dvec3& p : part.mesh.vertices) p += shift;
-  }
+  translate(parts, shift);
   placement.moved_by_mm += shift;
   placement.has_base = true;
   placement.base_radius_mm = radius;

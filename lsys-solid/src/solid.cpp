@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <glm/common.hpp>
 
 #include "lsolid/parts.hpp"
 #include "lsolid/rounding.hpp"
@@ -63,13 +62,7 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
     parts = build_parts(scaled.skeleton, {.wall_mm = print.wall_mm,
                                           .tolerance_mm = print.tolerance_mm});
     if (options.print.scale_mm_per_unit || parts.parts.empty()) break;
-    Box box;
-    for (const Part& part : parts.parts) {
-      const Box b = bounds(part.mesh);
-      box.min = glm::min(box.min, b.min);
-      box.max = glm::max(box.max, b.max);
-    }
-    const glm::dvec3 extent = box.size();
+    const glm::dvec3 extent = bounds(parts.parts).size();
     const double actual = options.print.height_mm
                               ? extent.z
                               : std::max({extent.x, extent.y, extent.z});

@@ -16,22 +16,12 @@ namespace {
 using testing::box_mesh;
 using testing::expect_printable;
 
-Box bounds_of(const std::vector<Part>& parts) {
-  Box box;
-  for (const Part& p : parts) {
-    const Box b = bounds(p.mesh);
-    box.min = glm::min(box.min, b.min);
-    box.max = glm::max(box.max, b.max);
-  }
-  return box;
-}
-
 TEST(Placement, CentresTheModelAndPutsItsLowestPointAtZeroWithoutABase) {
   std::vector<Part> parts{{box_mesh({10, 20, 5}, {30, 40, 25}), "cube"}};
   const Placement p = place_on_bed(parts, Base::Auto, 0.8, 0.05);
   EXPECT_FALSE(p.has_base);  // a cube stands on its whole face
   EXPECT_EQ(parts.size(), 1U);
-  const Box b = bounds_of(parts);
+  const Box b = bounds(parts);
   EXPECT_EQ(b.min.z, 0.0);
   EXPECT_EQ(b.min.x, -10.0);
   EXPECT_EQ(b.max.y, 10.0);
@@ -65,7 +55,7 @@ TEST(Placement, StandsATallThinModelOnADisc) {
   const double radius = (disc.max.x - disc.min.x) / 2.0;
   EXPECT_NEAR((disc.min.x + disc.max.x) / 2.0, foot_x, 1e-9);
   EXPECT_GT(radius, 1.4 * std::fabs(balance_x - foot_x));
-  const Box all = bounds_of(parts);
+  const Box all = bounds(parts);
   EXPECT_NEAR(all.min.x, -all.max.x, 1e-9);
   EXPECT_NEAR(all.min.y, -all.max.y, 1e-9);
   expect_printable(parts.back().mesh);

@@ -49,6 +49,9 @@ struct PartSet {
 [[nodiscard]] PartSet build_parts(const lsys::Skeleton& skeleton,
                                   const PartOptions& options = {});
 
+/// The bounding box of all parts.
+[[nodiscard]] Box bounds(const std::vector<Part>& parts);
+
 /// The number of sides of a tube of this radius whose flat sides stay
 /// within `tolerance_mm` of the circle (at least 6).
 [[nodiscard]] int tube_sides(double radius_mm, double tolerance_mm);

@@ -21,9 +21,9 @@ struct Placement {
 };
 
 /// Puts the parts on the bed: centred on the origin in X and Y (with the
-/// base, if any), their lowest point at z = 0 (the union's lowest point is a part's vertex, so
-/// the written mesh rests there too). With `Base::Disc`, or with
-/// `Base::Auto` where the model would stand on a footprint narrower (in
+/// base, if any), their lowest point at z = 0 (the union's lowest point is a
+/// part's vertex, so the written mesh rests there too). With `Base::Disc`, or
+/// with `Base::Auto` where the model would stand on a footprint narrower (in
 /// either direction) than a fifth of its height, a disc is added as a part
 /// under the foot, and the model is lifted to sink its foot half-way into it:
 /// the disc is centred under the foot, 2 walls thick (at least 1.2 mm), and

@@ -50,8 +50,7 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 constexpr double kPerturbationMm = 1e-5;
 constexpr int kAttempts = 3;
 
-CGAL::Bbox_3 box_of(const TriangleMesh& m) {
-  const Box b = bounds(m);
+CGAL::Bbox_3 box_of(const Box& b) {
   constexpr double kMargin = 1e-6;  // touching parts must be unioned
   return {b.min.x - kMargin, b.min.y - kMargin, b.min.z - kMargin,
           b.max.x + kMargin, b.max.y + kMargin, b.max.z + kMargin};
@@ -174,53 +173,10 @@ class Unioner {
   UnionResult run() {
     if (parts_.empty())
       throw GeometryError("nothing to unite: there are no parts");
-    std::vector<Group> groups = initial_groups();
-    // The two smallest groups first, so that the large ones take part in
-    // few unions: a union costs time in proportion to both operands' sizes,
-    // not only to where they meet.
-    const auto larger = [](const Group& a, const Group& b) {
-      return a.mesh.number_of_faces() > b.mesh.number_of_faces();
-    };
-    std::make_heap(groups.begin(), groups.end(), larger);
-    // The work expected: each union costs about its operands' sizes, and a
-    // union's result is about as large as both (the same merge order, on
-    // sizes alone).
-    double total = 0.0;
-    {
-      std::vector<double> sizes;
-      for (const Group& g : groups)
-        sizes.push_back(static_cast<double>(g.mesh.number_of_faces()));
-      const auto more = std::greater<>();
-      std::make_heap(sizes.begin(), sizes.end(), more);
-      while (sizes.size() > 1) {
-        std::pop_heap(sizes.begin(), sizes.end(), more);
-        const double a = sizes.back();
-        sizes.pop_back();
-        std::pop_heap(sizes.begin(), sizes.end(), more);
-        sizes.back() += a;
-        total += sizes.back();
-        std::push_heap(sizes.begin(), sizes.end(), more);
-      }
-    }
-    double done = 0.0;
-    while (groups.size() > 1) {
-      std::pop_heap(groups.begin(), groups.end(), larger);
-      Group a = std::move(groups.back());
-      groups.pop_back();
-      std::pop_heap(groups.begin(), groups.end(), larger);
-      Group b = std::move(groups.back());
-      // The last union's new points are rounded with the whole mesh, by
-      // round_and_repair.
-      const bool last = groups.size() == 1;
-      done += static_cast<double>(a.mesh.number_of_faces() +
-                                  b.mesh.number_of_faces());
-      groups.back() = merge(std::move(a), std::move(b), !last);
-      if (progress_ && !last) progress_(std::min(done / total, 0.99));
-      std::push_heap(groups.begin(), groups.end(), larger);
-    }
+    const Group all = reduce(initial_groups(), true);
     UnionResult result;
     result.stats = stats_;
-    result.mesh = to_triangle_mesh(groups.front().mesh);
+    result.mesh = to_triangle_mesh(all.mesh);
     if (progress_) progress_(1.0);
     return result;
   }
@@ -234,13 +190,8 @@ class Unioner {
   std::vector<Group> initial_groups() {
     std::vector<CGAL::Bbox_3> boxes;
     boxes.reserve(parts_.size());
-    Box all;
-    for (const Part& part : parts_) {
-      boxes.push_back(box_of(part.mesh));
-      const Box b = bounds(part.mesh);
-      all.min = glm::min(all.min, b.min);
-      all.max = glm::max(all.max, b.max);
-    }
+    for (const Part& part : parts_) boxes.push_back(box_of(bounds(part.mesh)));
+    const Box all = bounds(parts_);
     using PartBox = CGAL::Box_intersection_d::Box_with_info_d<
         double, 3, std::size_t, CGAL::Box_intersection_d::ID_EXPLICIT>;
     std::vector<PartBox> part_boxes;
@@ -370,27 +321,66 @@ class Unioner {
         (last_failure_.empty() ? "" : " (" + last_failure_ + ")"));
   }
 
-  // The union of some parts, each its own operand, smallest first.
+  // The union of some parts, each its own operand.
   Group unite(const std::vector<std::size_t>& ids) {
     std::vector<Group> groups;
     for (const std::size_t i : ids) {
       groups.push_back(Group{to_surface_mesh<ExactMesh>(parts_[i].mesh),
-                             box_of(parts_[i].mesh),
+                             box_of(bounds(parts_[i].mesh)),
                              {i}});
     }
-    const auto larger = [](const Group& x, const Group& y) {
-      return x.mesh.number_of_faces() > y.mesh.number_of_faces();
+    return reduce(std::move(groups), false);
+  }
+
+  // Unites the groups, the two smallest first, so that the large ones take
+  // part in few unions: a union costs time in proportion to both operands'
+  // sizes, not only to where they meet. For the final union (`is_final`)
+  // progress is told, and the last union's new points are left to
+  // round_and_repair, which rounds the whole mesh.
+  Group reduce(std::vector<Group> groups, bool is_final) {
+    const auto larger = [](const Group& a, const Group& b) {
+      return a.mesh.number_of_faces() > b.mesh.number_of_faces();
     };
     std::make_heap(groups.begin(), groups.end(), larger);
+    const bool tell = is_final && progress_;
+    const double total = tell ? expected_work(groups) : 0.0;
+    double done = 0.0;
     while (groups.size() > 1) {
       std::pop_heap(groups.begin(), groups.end(), larger);
-      Group x = std::move(groups.back());
+      Group a = std::move(groups.back());
       groups.pop_back();
       std::pop_heap(groups.begin(), groups.end(), larger);
-      groups.back() = merge(std::move(x), std::move(groups.back()), true);
+      Group b = std::move(groups.back());
+      const bool last = is_final && groups.size() == 1;
+      done += static_cast<double>(a.mesh.number_of_faces() +
+                                  b.mesh.number_of_faces());
+      groups.back() = merge(std::move(a), std::move(b), !last);
+      if (tell && !last) progress_(std::min(done / total, 0.99));
       std::push_heap(groups.begin(), groups.end(), larger);
     }
     return std::move(groups.front());
+  }
+
+  // The work reduce() expects: each union costs about its operands' sizes,
+  // and a union's result is about as large as both (the same merge order,
+  // on sizes alone).
+  static double expected_work(const std::vector<Group>& groups) {
+    std::vector<double> sizes;
+    for (const Group& g : groups)
+      sizes.push_back(static_cast<double>(g.mesh.number_of_faces()));
+    const auto more = std::greater<>();
+    std::make_heap(sizes.begin(), sizes.end(), more);
+    double total = 0.0;
+    while (sizes.size() > 1) {
+      std::pop_heap(sizes.begin(), sizes.end(), more);
+      const double a = sizes.back();
+      sizes.pop_back();
+      std::pop_heap(sizes.begin(), sizes.end(), more);
+      sizes.back() += a;
+      total += sizes.back();
+      std::push_heap(sizes.begin(), sizes.end(), more);
+    }
+    return total;
   }
 
   std::string describe(const Group& g) const {

@@ -39,6 +39,12 @@ void print_report(const SolidReport& r, bool united) {
         r.union_stats.booleans, r.union_stats.rounded,
         r.union_stats.concatenations, r.union_stats.retries, r.cavities_filled);
   }
+  if (r.placement.lies_flat) {
+    fmt::print(
+        "placement: planar, lying flat; underside cut flat {:.2f} mm below "
+        "the branches' centre plane\n",
+        r.placement.cut_depth_mm);
+  }
   if (r.placement.has_base) {
     fmt::print(
         "base: a disc of {:.1f} mm radius, {:.1f} mm thick, under a foot "
@@ -46,6 +52,23 @@ void print_report(const SolidReport& r, bool united) {
         "mm wide\n",
         r.placement.base_radius_mm, r.placement.base_thickness_mm,
         r.placement.footprint_mm);
+  }
+  const DecimateStats& d = r.decimation;
+  if (r.decimated) {
+    fmt::print(
+        "decimation: {} -> {} triangles, {} collapses refused as they would "
+        "cut the mesh; deviation {:.3f} mm (Hausdorff, sampled)\n",
+        d.triangles_before, d.triangles_after, d.refused_intersections,
+        d.max_deviation_mm);
+    if (!d.reached_max_triangles) {
+      fmt::print(
+          "decimation: could not reach --max-triangles without breaking the "
+          "mesh\n");
+    }
+  } else if (d.triangles_before > 0) {
+    fmt::print(
+        "decimation: its result failed the check and was not used (please "
+        "report this)\n");
   }
   fmt::print("triangles: {}\n", v.triangles);
   fmt::print("volume: {:.1f} mm³\n", v.volume_mm3);
@@ -62,10 +85,9 @@ void print_report(const SolidReport& r, bool united) {
   }
   fmt::print(
       "time: skeleton {:.2f} s, parts {:.2f} s, union {:.2f} s, rounding "
-      "{:.2f} s, "
-      "check {:.2f} s\n",
+      "{:.2f} s, decimation {:.2f} s, check {:.2f} s\n",
       r.seconds.skeleton, r.seconds.parts, r.seconds.unite, r.seconds.round,
-      r.seconds.check);
+      r.seconds.decimate, r.seconds.check);
   if (v.is_printable()) {
     fmt::print(
         "check: printable: closed, manifold, outward, no self-intersections; "
@@ -89,23 +111,37 @@ std::string json_report(const SolidReport& r, const OverhangReport& over,
       "{{\"output\": {}, \"written\": {}, \"united\": {}, \"segments\": {}, "
       "\"leaves\": {}, \"tubes\": {}, \"junction_hulls\": {}, \"joints\": {}, "
       "\"leaf_plates\": {}, \"booleans\": {}, \"mm_per_unit\": {}, "
-      "\"base\": {}, \"triangles\": {}, \"volume_mm3\": {}, "
+      "\"base\": {}, \"lies_flat\": {}, \"decimation\": {}, "
+      "\"triangles\": {}, "
+      "\"volume_mm3\": {}, "
       "\"bounds\": {{\"min\": {}, \"max\": {}}}, \"printable\": {}, "
       "\"shells\": {}, \"genus\": {}, \"overhang_mm2\": {}, "
       "\"needs_supports\": {}, \"fits_bed\": {}, "
       "\"seconds\": {{\"skeleton\": {}, \"parts\": {}, \"union\": {}, "
-      "\"rounding\": {}, \"check\": {}}}}}\n",
+      "\"rounding\": {}, \"decimation\": {}, \"check\": {}}}}}\n",
       json_string(output.string()), written, united, r.segments, r.polygons,
       r.tubes, r.junctions, r.joints, r.plates, r.union_stats.booleans,
       r.mm_per_unit,
       p.has_base ? fmt::format("{{\"radius_mm\": {}, \"thickness_mm\": {}}}",
                                p.base_radius_mm, p.base_thickness_mm)
                  : std::string("null"),
+      p.lies_flat,
+      r.decimated
+          ? fmt::format(
+                "{{\"triangles_before\": {}, \"triangles_after\": {}, "
+                "\"refused_intersections\": {}, \"max_deviation_mm\": {}, "
+                "\"reached_max_triangles\": {}}}",
+                r.decimation.triangles_before, r.decimation.triangles_after,
+                r.decimation.refused_intersections,
+                r.decimation.max_deviation_mm,
+                r.decimation.reached_max_triangles)
+          : std::string("null"),
       v.triangles, v.volume_mm3, json_point(v.bounds.min),
       json_point(v.bounds.max), v.is_printable(), v.shells, v.genus,
       over.area_mm2, over.needs_supports,
       bed ? (fits ? "true" : "false") : "null", r.seconds.skeleton,
-      r.seconds.parts, r.seconds.unite, r.seconds.round, r.seconds.check);
+      r.seconds.parts, r.seconds.unite, r.seconds.round, r.seconds.decimate,
+      r.seconds.check);
 }
 
 }  // namespace
@@ -160,6 +196,8 @@ int run_build(const BuildCommand& command) {
   options.interpretation = interpret_options(command.input);
   options.print = print_settings(grammar, command.print);
   options.unite = !command.no_union;
+  options.decimate = !command.no_decimate;
+  options.max_triangles = command.max_triangles;
   options.float_coordinates = format != MeshFormat::Off;
   const bool text = !command.quiet && !command.json;
   // A progress bar on a terminal only: redrawn in place on standard error,
@@ -170,7 +208,7 @@ int run_build(const BuildCommand& command) {
       constexpr int kWidth = 30;
       const int filled = static_cast<int>(fraction * kWidth);
       std::fprintf(
-          stderr, "\r%-8.*s [%s%s] %3d%%", static_cast<int>(stage.size()),
+          stderr, "\r%-10.*s [%s%s] %3d%%", static_cast<int>(stage.size()),
           stage.data(),
           std::string(static_cast<std::size_t>(filled), '#').c_str(),
           std::string(static_cast<std::size_t>(kWidth - filled), ' ').c_str(),

@@ -85,6 +85,8 @@ struct BuildCommand {
   std::string output;  ///< empty: FILE with .stl beside the input
   bool ascii = false;
   bool no_union = false;
+  bool no_decimate = false;
+  std::optional<std::size_t> max_triangles;
   std::string preview;  ///< a PNG to render the written mesh to, or empty
   std::optional<std::string> bed;  ///< the build volume, `220x220x250mm`
   bool force = false;              ///< write even if it does not fit the bed

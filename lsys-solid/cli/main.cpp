@@ -60,6 +60,15 @@ int main(int argc, char** argv) {
                  "also render the mesh, shaded, to this PNG (offscreen)");
   app.add_flag("--no-union", build.no_union,
                "write the overlapping parts without uniting them (debugging)");
+  auto* no_decimate = app.add_flag(
+      "--no-decimate", build.no_decimate,
+      "keep every triangle of the union (decimation is on by default, within "
+      "--tolerance)");
+  app.add_option("--max-triangles", build.max_triangles,
+                 "decimate to at most N triangles, beyond --tolerance if "
+                 "need be (never at the cost of validity)")
+      ->check(CLI::PositiveNumber)
+      ->excludes(no_decimate);
   lsolid::cli::add_print_options(app, build.print);
 
   lsolid::cli::DeriveCommand derive;

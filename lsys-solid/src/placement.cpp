@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <numbers>
+#include <optional>
 
 namespace lsolid {
 namespace {
@@ -48,12 +49,93 @@ void translate(std::vector<Part>& parts, const glm::dvec3& by) {
   }
 }
 
+// The rotation taking the unit vector n to +Z: Rodrigues' formula about
+// n × Z, or half a turn about X when n = -Z. A rotation keeps triangles
+// outward.
+glm::dvec3 turned_to_z(const glm::dvec3& n, const glm::dvec3& p) {
+  const glm::dvec3 z(0.0, 0.0, 1.0);
+  const double c = glm::dot(n, z);
+  glm::dvec3 axis = glm::cross(n, z);
+  const double s = glm::length(axis);
+  if (s < 1e-12) return c > 0.0 ? p : glm::dvec3(p.x, -p.y, -p.z);
+  axis /= s;
+  return p * c + glm::cross(axis, p) * s + axis * glm::dot(axis, p) * (1.0 - c);
+}
+
 }  // namespace
 
+std::optional<SkeletonPlane> skeleton_plane(const lsys::Skeleton& skeleton,
+                                            double wall_mm) {
+  std::vector<glm::dvec3> points;
+  double thinnest = 1e300;
+  for (const lsys::Segment& s : skeleton.segments) {
+    points.push_back(s.p0);
+    points.push_back(s.p1);
+    thinnest =
+        std::min({thinnest, s.start_diameter / 2.0, s.end_diameter / 2.0});
+  }
+  for (const lsys::Polygon& polygon : skeleton.polygons) {
+    points.insert(points.end(), polygon.points.begin(), polygon.points.end());
+  }
+  if (points.size() < 3) return std::nullopt;
+  glm::dvec3 lo = points[0];
+  glm::dvec3 hi = points[0];
+  for (const glm::dvec3& p : points) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const double size = glm::length(hi - lo);
+  if (size <= 0.0) return std::nullopt;
+  // The normal from the farthest point from the first and the point
+  // farthest from the line through both: a well-conditioned triangle.
+  const glm::dvec3 a = points[0];
+  glm::dvec3 b = a;
+  for (const glm::dvec3& p : points) {
+    if (glm::distance(p, a) > glm::distance(b, a)) b = p;
+  }
+  const glm::dvec3 ab = glm::normalize(b - a);
+  glm::dvec3 normal(0.0);
+  for (const glm::dvec3& p : points) {
+    const glm::dvec3 n = glm::cross(ab, p - a);
+    if (glm::length(n) > glm::length(normal)) normal = n;
+  }
+  if (glm::length(normal) <= 1e-6 * size) return std::nullopt;  // a line
+  normal = glm::normalize(normal);
+  for (const glm::dvec3& p : points) {
+    if (std::fabs(glm::dot(p - a, normal)) > 1e-9 * size) return std::nullopt;
+  }
+  return SkeletonPlane{
+      .normal = normal,
+      .point = a,
+      .thinnest_radius_mm =
+          std::max(wall_mm / 2.0, skeleton.segments.empty() ? 0.0 : thinnest)};
+}
+
 Placement place_on_bed(std::vector<Part>& parts, Base base, double wall_mm,
-                       double tolerance_mm) {
+                       double tolerance_mm,
+                       const std::optional<SkeletonPlane>& plane) {
   Placement placement;
   if (parts.empty()) return placement;
+  if (base == Base::Auto && plane) {
+    for (Part& part : parts) {
+      for (glm::dvec3& p : part.mesh.vertices) {
+        p = turned_to_z(plane->normal, p);
+      }
+    }
+    const double plane_z = turned_to_z(plane->normal, plane->point).z;
+    const Box box = bounds(parts);
+    const glm::dvec3 move(-(box.min.x + box.max.x) / 2.0,
+                          -(box.min.y + box.max.y) / 2.0, -box.min.z);
+    translate(parts, move);
+    placement.moved_by_mm = move;
+    placement.lies_flat = true;
+    placement.cut_depth_mm = plane->thinnest_radius_mm / 2.0;
+    placement.cut_z_mm =
+        std::max(0.0, plane_z + move.z - placement.cut_depth_mm);
+    placement.footprint_mm =
+        std::min(box.max.x - box.min.x, box.max.y - box.min.y);
+    return placement;
+  }
   const Box box = bounds(parts);
   const glm::dvec3 move(-(box.min.x + box.max.x) / 2.0,
                         -(box.min.y + box.max.y) / 2.0, -box.min.z);

@@ -6,6 +6,9 @@
 #include <chrono>
 #include <cmath>
 
+#include "lsolid/cut.hpp"
+#include "lsolid/decimate.hpp"
+#include "lsolid/errors.hpp"
 #include "lsolid/parts.hpp"
 #include "lsolid/rounding.hpp"
 #include "lsolid/scale.hpp"
@@ -79,9 +82,30 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   report.joints = parts.joints;
   report.plates = parts.plates;
   report.skipped_polygons = parts.skipped_polygons;
-  report.placement =
-      place_on_bed(parts.parts, options.print.base, options.print.wall_mm,
-                   options.print.tolerance_mm);
+  report.placement = place_on_bed(
+      parts.parts, options.print.base, options.print.wall_mm,
+      options.print.tolerance_mm,
+      options.unite ? skeleton_plane(scaled.skeleton, print.wall_mm)
+                    : std::nullopt);
+  if (report.placement.lies_flat && report.placement.cut_z_mm > 0.0) {
+    const double z = report.placement.cut_z_mm;
+    for (Part& part : parts.parts) {
+      if (bounds(part.mesh).min.z < z) {
+        // Rounding the cut's exact points to doubles can fold a cap that
+        // had three points in a row; such a part stays uncut.
+        TriangleMesh cut = cut_below(part.mesh, z);
+        if (validate(cut).is_printable()) {
+          part.mesh = std::move(cut);
+        } else {
+          ++report.placement.parts_left_uncut;
+        }
+      }
+      for (glm::dvec3& p : part.mesh.vertices) p.z -= z;
+    }
+    std::erase_if(parts.parts,
+                  [](const Part& part) { return part.mesh.triangles.empty(); });
+    report.placement.moved_by_mm.z -= z;
+  }
   report.seconds.parts = clock.lap();
   tell("union", 0.0);
 
@@ -104,8 +128,39 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
     solid.mesh = round_to_float(solid.mesh);
   }
   report.seconds.round = clock.lap();
-  tell("check", 0.0);
 
+  if (options.unite && options.decimate) {
+    tell("decimation", 0.0);
+    Decimated decimated;
+    try {
+      decimated = lsolid::decimate(
+          solid.mesh,
+          {.tolerance_mm = options.print.tolerance_mm,
+           .max_triangles = options.max_triangles,
+           .progress = [&](double done) { tell("decimation", done); }});
+    } catch (const GeometryError&) {
+      // A union that is not a 2-manifold cannot be decimated; it is
+      // written as it is and its check says why.
+      decimated.mesh.triangles.clear();
+    }
+    report.decimation = decimated.stats;
+    report.seconds.decimate = clock.lap();
+    tell("check", 0.0);
+    // The guard keeps every collapse valid; checking the result anyway
+    // costs a second and means a failure ships the undecimated mesh, not a
+    // broken one.
+    if (!decimated.mesh.triangles.empty()) {
+      report.validation = validate(decimated.mesh);
+    }
+    if (report.validation.is_printable()) {
+      solid.mesh = std::move(decimated.mesh);
+      report.decimated = true;
+      report.seconds.check = clock.lap();
+      tell("check", 1.0);
+      return solid;
+    }
+  }
+  tell("check", 0.0);
   report.validation = validate(solid.mesh);
   report.seconds.check = clock.lap();
   tell("check", 1.0);

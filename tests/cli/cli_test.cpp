@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <string>
 
 #include "support/run_command.hpp"
@@ -141,6 +142,36 @@ TEST_F(Build, WritesAPrintableStlAndReports) {
   EXPECT_NE(check.out.find("verdict: printable\n"), std::string::npos);
   EXPECT_NE(check.out.find(" x 60.000 x 60.000 mm"), std::string::npos)
       << check.out;
+}
+
+TEST_F(Build, DecimatesTheBushWithinToleranceAndItStillPassesCheck) {
+  use_printable("abop-1.25-bush", "bush.ls");
+  const auto r = run_command(
+      lsolid() + " bush.ls -n 4 --tolerance 0.05mm -o bush.stl", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::regex line(
+      "decimation: ([0-9]+) -> ([0-9]+) triangles, [0-9]+ collapses refused "
+      "as they would cut the mesh; deviation ([0-9.]+) mm");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m, line)) << r.out;
+  EXPECT_LT(std::stoul(m[2]), std::stoul(m[1]));
+  EXPECT_LE(std::stod(m[3]), 0.05);
+  EXPECT_NE(r.out.find("triangles: " + m[2].str() + "\n"), std::string::npos);
+  const auto check = run_command(lsolid() + " check bush.stl", dir_);
+  EXPECT_EQ(check.exit_code, 0) << check.out;
+  const auto capped = run_command(
+      lsolid() + " bush.ls -n 4 --max-triangles 1500 -o capped.stl", dir_);
+  ASSERT_EQ(capped.exit_code, 0) << capped.err;
+  EXPECT_NE(capped.out.find("-> 1500 triangles"), std::string::npos)
+      << capped.out;
+  EXPECT_EQ(run_command(lsolid() + " check capped.stl", dir_).exit_code, 0);
+  const auto raw =
+      run_command(lsolid() + " bush.ls -n 4 --no-decimate -o raw.stl", dir_);
+  EXPECT_EQ(raw.out.find("decimation:"), std::string::npos);
+  EXPECT_EQ(
+      run_command(lsolid() + " bush.ls --no-decimate --max-triangles 9", dir_)
+          .exit_code,
+      2);
 }
 
 TEST_F(Build, WritesBesideTheInputByDefaultAndTakesOff) {

@@ -71,5 +71,56 @@ TEST(Placement, AddsADiscOnlyWhenAskedOrNeeded) {
   EXPECT_EQ(bounds(stick[0].mesh).min.z, 0.0);
 }
 
+lsys::Skeleton skeleton_of(const std::vector<glm::dvec3>& path,
+                           double diameter) {
+  lsys::Skeleton s;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    s.segments.push_back({.p0 = path[i],
+                          .p1 = path[i + 1],
+                          .start_diameter = diameter,
+                          .end_diameter = diameter});
+  }
+  return s;
+}
+
+TEST(Placement, FindsThePlaneOfAPlanarSkeletonOnly) {
+  // An L in the plane x = 2: its normal is ±X.
+  const auto plane =
+      skeleton_plane(skeleton_of({{2, 0, 0}, {2, 0, 5}, {2, 3, 5}}, 1.0), 0.8);
+  ASSERT_TRUE(plane.has_value());
+  EXPECT_NEAR(std::fabs(plane->normal.x), 1.0, 1e-12);
+  EXPECT_NEAR(plane->point.x, 2.0, 1e-12);
+  EXPECT_DOUBLE_EQ(plane->thinnest_radius_mm, 0.5);
+  // Thinner than the wall: the tubes are made a wall thick.
+  EXPECT_DOUBLE_EQ(
+      skeleton_plane(skeleton_of({{0, 0, 0}, {0, 0, 5}, {0, 3, 5}}, 0.2), 0.8)
+          ->thinnest_radius_mm,
+      0.4);
+  // A straight line spans no plane, and a corner out of it is 3D.
+  EXPECT_FALSE(skeleton_plane(skeleton_of({{0, 0, 0}, {0, 0, 5}}, 1.0), 0.8));
+  EXPECT_FALSE(skeleton_plane(
+      skeleton_of({{0, 0, 0}, {0, 0, 5}, {0, 3, 5}, {1, 3, 5}}, 1.0), 0.8));
+}
+
+TEST(Placement, LaysAPlanarModelFlatWithACutBelowItsPlane) {
+  // A vertical 10 × 10 × 1 plate standing in the plane y = 0.
+  std::vector<Part> parts{{box_mesh({0, -0.5, 0}, {10, 0.5, 10}), "plate"}};
+  const SkeletonPlane plane{
+      .normal = {0, 1, 0}, .point = {0, 0, 0}, .thinnest_radius_mm = 0.5};
+  const Placement p = place_on_bed(parts, Base::Auto, 0.8, 0.05, plane);
+  EXPECT_TRUE(p.lies_flat);
+  EXPECT_FALSE(p.has_base);
+  const Box box = bounds(parts);
+  EXPECT_NEAR(box.min.z, 0.0, 1e-12);
+  EXPECT_NEAR(box.max.z, 1.0, 1e-12);  // lying: 1 mm tall
+  EXPECT_NEAR(box.size().x, 10.0, 1e-12);
+  EXPECT_NEAR(box.size().y, 10.0, 1e-12);
+  EXPECT_DOUBLE_EQ(p.cut_depth_mm, 0.25);
+  EXPECT_NEAR(p.cut_z_mm, 0.25, 1e-12);  // the plane is at z = 0.5
+  // With an explicit base it stands, as before.
+  std::vector<Part> standing{{box_mesh({0, -0.5, 0}, {10, 0.5, 10}), "plate"}};
+  EXPECT_FALSE(place_on_bed(standing, Base::None, 0.8, 0.05, plane).lies_flat);
+}
+
 }  // namespace
 }  // namespace lsolid

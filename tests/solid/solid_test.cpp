@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <glm/geometric.hpp>
 #include <numbers>
 
 #include "lsolid/errors.hpp"
@@ -82,6 +83,37 @@ TEST(Solid, HoldsTheSizeAskedForWithJointsAndMitres) {
   EXPECT_NEAR(tall.report.validation.bounds.size().z, 30.0, 0.06);
 }
 
+TEST(Solid, APlanarFigureLiesFlatOnAFlatUnderside) {
+  // ABOP fig. 1.7 b, quadratic Koch island, n = 1: every branch in one
+  // plane.
+  const lsys::Grammar koch =
+      parse("n=1, \u03B4=90\u00B0\nF-F-F-F\nF \u2192 F-F+F+FF-F-F+F\n");
+  const Solid s = build_solid(koch, {.print = {.size_mm = 50.0}});
+  expect_printable(s.mesh, 1);
+  EXPECT_TRUE(s.report.placement.lies_flat);
+  EXPECT_FALSE(s.report.placement.has_base);
+  const Box box = s.report.validation.bounds;
+  EXPECT_NEAR(box.min.z, 0.0, 1e-9);
+  // Lying down it is as tall as its tubes less the cut: 3/4 of a wall-thick
+  // tube at the thinnest, here all of one thickness.
+  EXPECT_LT(box.size().z, 0.8 * 2.0);
+  EXPECT_NEAR(std::max(box.size().x, box.size().y), 50.0, 0.1);
+  // The underside: faces in z = 0 facing down, under every tube.
+  double flat_mm2 = 0.0;
+  for (const auto& t : s.mesh.triangles) {
+    const glm::dvec3& a = s.mesh.vertices[t[0]];
+    const glm::dvec3& b = s.mesh.vertices[t[1]];
+    const glm::dvec3& c = s.mesh.vertices[t[2]];
+    if (a.z == 0.0 && b.z == 0.0 && c.z == 0.0) {
+      const glm::dvec3 n = glm::cross(b - a, c - a);
+      EXPECT_LT(n.z, 0.0);
+      flat_mm2 += glm::length(n) / 2.0;
+    }
+  }
+  // 32 segments of 50/7 mm... at least half a tube width along all of them.
+  EXPECT_GT(flat_mm2, 0.5 * 0.8 * 32 * (50.0 / 8.0) * 0.5);
+}
+
 TEST(Solid, TellsItsProgressStageByStage) {
   std::vector<std::string> stages;
   double last_union = -1.0;
@@ -94,8 +126,9 @@ TEST(Solid, TellsItsProgressStageByStage) {
     }
   };
   (void)build_solid(parse("\u03C9: F[+F][-F]\n\u03B4=30\u00B0\n"), options);
-  EXPECT_EQ(stages, (std::vector<std::string>{"skeleton", "parts", "union",
-                                              "rounding", "check"}));
+  EXPECT_EQ(stages,
+            (std::vector<std::string>{"skeleton", "parts", "union", "rounding",
+                                      "decimation", "check"}));
   EXPECT_EQ(last_union, 1.0);
 }
 

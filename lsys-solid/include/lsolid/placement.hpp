@@ -2,10 +2,14 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cstddef>
+#include <glm/vec3.hpp>
+#include <optional>
 #include <vector>
 
 #include "lsolid/parts.hpp"
 #include "lsolid/print_settings.hpp"
+#include "lsys/skeleton.hpp"
 
 namespace lsolid {
 
@@ -18,7 +22,28 @@ struct Placement {
   /// The width of what the model stands on (without a base), across its
   /// narrower horizontal side.
   double footprint_mm = 0.0;
+  /// A planar model was turned to lie flat; its underside is to be cut off
+  /// at `cut_z_mm` (in the placed coordinates) for a flat contact face.
+  bool lies_flat = false;
+  double cut_z_mm = 0.0;
+  double cut_depth_mm = 0.0;  ///< how far below the skeleton's plane
+  /// Parts whose cut could not be rounded to doubles validly, left whole.
+  std::size_t parts_left_uncut = 0;
 };
+
+/// The plane a planar skeleton is drawn in, in millimetres.
+struct SkeletonPlane {
+  glm::dvec3 normal{0.0, 0.0, 1.0};  ///< unit length
+  glm::dvec3 point{0.0};             ///< a point of the plane
+  double thinnest_radius_mm = 0.0;   ///< of its segments
+};
+
+/// The plane holding every segment and polygon of the skeleton, if there is
+/// one (ABOP's planar figures: Koch curves, Sierpinski, the fig. 1.24 plants
+/// drawn with + and - only); none for a straight line or a 3D model.
+/// Points may stray from the plane by 10⁻⁹ of the model's size.
+[[nodiscard]] std::optional<SkeletonPlane> skeleton_plane(
+    const lsys::Skeleton& skeleton, double wall_mm);
 
 /// Puts the parts on the bed: centred on the origin in X and Y (with the
 /// base, if any), their lowest point at z = 0 (the union's lowest point is a
@@ -29,8 +54,14 @@ struct Placement {
 /// the disc is centred under the foot, 2 walls thick (at least 1.2 mm), and
 /// wide enough that the model's centre of mass (of its parts' volumes) lies
 /// well inside it.
+///
+/// With `Base::Auto` and a `plane`, the model lies flat instead: turned so
+/// that the plane is horizontal, with no disc, and `cut_z_mm` set half its
+/// thinnest radius below the plane, so that every branch touches the bed
+/// with a flat face and the thinnest keeps three quarters of its height.
 /// @pre every part is closed and outward-oriented.
-[[nodiscard]] Placement place_on_bed(std::vector<Part>& parts, Base base,
-                                     double wall_mm, double tolerance_mm);
+[[nodiscard]] Placement place_on_bed(
+    std::vector<Part>& parts, Base base, double wall_mm, double tolerance_mm,
+    const std::optional<SkeletonPlane>& plane = std::nullopt);
 
 }  // namespace lsolid

@@ -4,9 +4,11 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string_view>
 
 #include "lsolid/boolean.hpp"
+#include "lsolid/decimate.hpp"
 #include "lsolid/mesh.hpp"
 #include "lsolid/placement.hpp"
 #include "lsolid/print_settings.hpp"
@@ -27,9 +29,13 @@ struct SolidOptions {
   bool unite = true;
   /// Round coordinates to floats before checking, as STL stores them.
   bool float_coordinates = true;
+  /// Decimate the union within `print.tolerance_mm` (needs `unite`).
+  bool decimate = true;
+  /// A cap on the triangles of the decimated mesh (`--max-triangles`).
+  std::optional<std::size_t> max_triangles;
   /// Told how far the build is: the stage ("skeleton", "parts", "union",
-  /// "rounding", "check") and the fraction of it done, 0 to 1, from the
-  /// thread that builds. Empty: not told.
+  /// "rounding", "decimation", "check") and the fraction of it done, 0 to 1,
+  /// from the thread that builds. Empty: not told.
   std::function<void(std::string_view stage, double fraction)> progress;
 };
 
@@ -39,6 +45,7 @@ struct StageSeconds {
   double parts = 0.0;     ///< scaling and meshing the parts
   double unite = 0.0;     ///< the boolean union
   double round = 0.0;     ///< rounding to the file's precision, with repair
+  double decimate = 0.0;  ///< decimation and measuring its deviation
   double check = 0.0;     ///< validation of the mesh as it will be written
 };
 
@@ -57,6 +64,11 @@ struct SolidReport {
   UnionStats union_stats;
   std::size_t cavities_filled = 0;  ///< sealed voids the union left
   RoundingStats rounding;
+  /// Whether the mesh returned is the decimated one; false when decimation
+  /// was off, or its result failed validation and was thrown away (then
+  /// `decimation` still says what it did).
+  bool decimated = false;
+  DecimateStats decimation;
   ValidationReport validation;  ///< of `Solid::mesh`, exactly as returned
   StageSeconds seconds;
 };

@@ -1,0 +1,16 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include "lsolid/mesh.hpp"
+
+namespace lsolid {
+
+/// What lies above the plane z = `z_mm`, closed again by a flat face in that
+/// plane: the underside a planar model lies on. Computed exactly (CGAL's
+/// clip with clip_volume on exact coordinates), then rounded to doubles.
+/// @pre `mesh` is closed, outward and free of self-intersections.
+/// @throws GeometryError if CGAL cannot cut it.
+[[nodiscard]] TriangleMesh cut_below(const TriangleMesh& mesh, double z_mm);
+
+}  // namespace lsolid

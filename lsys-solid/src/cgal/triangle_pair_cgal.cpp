@@ -1,0 +1,82 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// The decimation guard's pair test. The cases follow CGAL's own
+// self-intersection test (Polygon_mesh_processing/self_intersections.h,
+// Strict_intersect_faces): triangles sharing an edge meet beyond it only
+// when they are coplanar and fold onto each other; triangles sharing one
+// vertex meet beyond it exactly when the edge opposite that vertex in one
+// crosses the other. Coordinates are doubles and every predicate of EPICK is
+// exact, so the answer is the one `lsolid check` gives.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/intersections.h>
+
+#include "triangle_pair.hpp"
+
+namespace lsolid {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+using Segment = Kernel::Segment_3;
+using Triangle = Kernel::Triangle_3;
+
+Point point(const glm::dvec3& p) { return {p.x, p.y, p.z}; }
+
+// The triangle's corners reordered so that the first `count` are those it
+// shares with `other`.
+std::array<Point, 3> shared_first(const IndexedTriangle& t,
+                                  const IndexedTriangle& other, int& count) {
+  std::array<int, 3> order{0, 1, 2};
+  count = 0;
+  std::array<bool, 3> used{};
+  for (int j = 0; j < 3; ++j) {
+    for (int i = 0; i < 3; ++i) {
+      if (!used[i] && t.ids[i] == other.ids[j]) {
+        order[count++] = i;
+        used[i] = true;
+        break;
+      }
+    }
+  }
+  for (int i = 0, k = count; i < 3; ++i) {
+    if (!used[i]) order[k++] = i;
+  }
+  return {point(t.points[order[0]]), point(t.points[order[1]]),
+          point(t.points[order[2]])};
+}
+
+}  // namespace
+
+bool is_degenerate(const IndexedTriangle& t) {
+  return CGAL::collinear(point(t.points[0]), point(t.points[1]),
+                         point(t.points[2]));
+}
+
+bool triangles_intersect(const IndexedTriangle& a, const IndexedTriangle& b) {
+  if (is_degenerate(a) || is_degenerate(b)) return true;
+  int count = 0;
+  const std::array<Point, 3> p = shared_first(a, b, count);
+  int count_b = 0;
+  const std::array<Point, 3> q = shared_first(b, a, count_b);
+  switch (count) {
+    case 0:
+      return CGAL::do_intersect(Triangle(p[0], p[1], p[2]),
+                                Triangle(q[0], q[1], q[2]));
+    case 1:
+      return CGAL::do_intersect(Segment(p[1], p[2]),
+                                Triangle(q[0], q[1], q[2])) ||
+             CGAL::do_intersect(Segment(q[1], q[2]),
+                                Triangle(p[0], p[1], p[2]));
+    case 2:
+      // p[0], p[1] are the shared edge's ends; p[2] and q[2] the corners
+      // opposite. Only a fold onto each other overlaps.
+      return CGAL::coplanar(p[0], p[1], p[2], q[2]) &&
+             CGAL::coplanar_orientation(p[0], p[1], p[2], q[2]) ==
+                 CGAL::POSITIVE;
+    default:
+      return true;
+  }
+}
+
+}  // namespace lsolid

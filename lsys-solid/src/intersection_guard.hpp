@@ -1,0 +1,219 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <OpenMesh/Tools/Decimater/ModBaseT.hh>
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <glm/common.hpp>
+#include <glm/vec3.hpp>
+#include <unordered_map>
+#include <vector>
+
+#include "triangle_pair.hpp"
+
+namespace lsolid {
+
+/// An OpenMesh decimation module that refuses every collapse whose new
+/// triangles would intersect the rest of the mesh, or each other, or be
+/// degenerate. OpenMesh's own modules only compare normals locally, and on
+/// a union of tubes they leave tens to thousands of intersecting pairs
+/// (../shared/reference/geometry-and-printing.md §3).
+///
+/// Faces are kept in a uniform grid of cells a few edges wide. A face that
+/// changes is added to the cells it now covers; stale entries stay and are
+/// skipped because every test reads the face's current corners.
+template <typename MeshT>
+class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
+ public:
+  DECIMATING_MODULE(ModIntersectionGuardT, MeshT, IntersectionGuard);
+
+  explicit ModIntersectionGuardT(MeshT& mesh) : Base(mesh, true) {}
+
+  /// Indexes every face, with cells four mean edge lengths wide.
+  void initialize() override {
+    MeshT& m = Base::mesh();
+    double length = 0.0;
+    std::size_t edges = 0;
+    for (const auto e : m.edges()) {
+      length += m.calc_edge_length(e);
+      ++edges;
+    }
+    cell_mm_ = edges == 0 ? 1.0 : 4.0 * length / static_cast<double>(edges);
+    cells_.clear();
+    large_.clear();
+    seen_.assign(m.n_faces(), 0);
+    changing_.assign(m.n_faces(), 0);
+    for (const auto f : m.faces()) insert(f);
+  }
+
+  /// Legal unless a new triangle would be degenerate or intersect another.
+  float collapse_priority(const CollapseInfo& ci) override {
+    return would_intersect(ci) ? float(Base::ILLEGAL_COLLAPSE)
+                               : float(Base::LEGAL_COLLAPSE);
+  }
+
+  /// Indexes the faces that moved.
+  void postprocess_collapse(const CollapseInfo& ci) override {
+    for (const auto f : Base::mesh().vf_range(ci.v1)) insert(f);
+  }
+
+  /// Collapses refused so far.
+  [[nodiscard]] std::size_t refused() const noexcept { return refused_; }
+
+  /// The test behind collapse_priority, for a driver that asks only when
+  /// it is about to collapse.
+  [[nodiscard]] bool would_intersect(const CollapseInfo& ci) {
+    MeshT& m = Base::mesh();
+    ++collapse_stamp_;
+    fresh_.clear();
+    for (const auto f : m.vf_range(ci.v0)) {
+      changing_[f.idx()] = collapse_stamp_;
+      if (f == ci.fl || f == ci.fr) continue;
+      IndexedTriangle t = triangle(f);
+      for (int k = 0; k < 3; ++k) {
+        if (t.ids[k] == static_cast<std::uint32_t>(ci.v0.idx())) {
+          t.ids[k] = static_cast<std::uint32_t>(ci.v1.idx());
+          t.points[k] = point(ci.p1);
+        }
+      }
+      if (is_degenerate(t)) return refuse();
+      fresh_.push_back(t);
+    }
+    for (std::size_t i = 0; i < fresh_.size(); ++i) {
+      for (std::size_t j = i + 1; j < fresh_.size(); ++j) {
+        if (triangles_intersect(fresh_[i], fresh_[j])) return refuse();
+      }
+    }
+    for (const IndexedTriangle& t : fresh_) {
+      const auto [lo, hi] = box(t);
+      ++query_stamp_;
+      bool hit = false;
+      for_cells(lo, hi, [&](const std::vector<int>& cell) {
+        for (const int index : cell) {
+          if (hit) return;
+          if (seen_[index] == query_stamp_) continue;
+          seen_[index] = query_stamp_;
+          const typename MeshT::FaceHandle g(index);
+          if (changing_[index] == collapse_stamp_ || m.status(g).deleted()) {
+            continue;
+          }
+          const IndexedTriangle other = triangle(g);
+          const auto [other_lo, other_hi] = box(other);
+          if (overlap(lo, hi, other_lo, other_hi) &&
+              triangles_intersect(t, other)) {
+            hit = true;
+          }
+        }
+      });
+      if (hit) return refuse();
+    }
+    return false;
+  }
+
+ private:
+  using Cell = std::uint64_t;
+
+  static glm::dvec3 point(const typename MeshT::Point& p) {
+    return {p[0], p[1], p[2]};
+  }
+
+  IndexedTriangle triangle(typename MeshT::FaceHandle f) {
+    MeshT& m = Base::mesh();
+    IndexedTriangle t;
+    int k = 0;
+    for (const auto v : m.fv_range(f)) {
+      if (k == 3) break;
+      t.ids[k] = static_cast<std::uint32_t>(v.idx());
+      t.points[k] = point(m.point(v));
+      ++k;
+    }
+    return t;
+  }
+
+  static std::pair<glm::dvec3, glm::dvec3> box(const IndexedTriangle& t) {
+    return {glm::min(glm::min(t.points[0], t.points[1]), t.points[2]),
+            glm::max(glm::max(t.points[0], t.points[1]), t.points[2])};
+  }
+
+  static bool overlap(const glm::dvec3& a_lo, const glm::dvec3& a_hi,
+                      const glm::dvec3& b_lo, const glm::dvec3& b_hi) {
+    return a_lo.x <= b_hi.x && b_lo.x <= a_hi.x && a_lo.y <= b_hi.y &&
+           b_lo.y <= a_hi.y && a_lo.z <= b_hi.z && b_lo.z <= a_hi.z;
+  }
+
+  glm::ivec3 cell_of(const glm::dvec3& p) const {
+    return glm::ivec3(glm::floor(p / cell_mm_));
+  }
+
+  static Cell key(int x, int y, int z) {
+    constexpr std::uint64_t mask = (1u << 21) - 1;
+    return (std::uint64_t(x) & mask) | ((std::uint64_t(y) & mask) << 21) |
+           ((std::uint64_t(z) & mask) << 42);
+  }
+
+  // Visits the cells that the box overlaps and the list of faces too large
+  // for cells; a box over more cells than are filled visits every cell.
+  template <typename Visit>
+  void for_cells(const glm::dvec3& lo, const glm::dvec3& hi, Visit visit) {
+    visit(large_);
+    const glm::ivec3 a = cell_of(lo);
+    const glm::ivec3 b = cell_of(hi);
+    if (cell_count(a, b) > double(cells_.size())) {
+      for (auto& [key, cell] : cells_) visit(cell);
+      return;
+    }
+    for (int x = a.x; x <= b.x; ++x) {
+      for (int y = a.y; y <= b.y; ++y) {
+        for (int z = a.z; z <= b.z; ++z) {
+          const auto it = cells_.find(key(x, y, z));
+          if (it != cells_.end()) visit(it->second);
+        }
+      }
+    }
+  }
+
+  static double cell_count(const glm::ivec3& a, const glm::ivec3& b) {
+    return double(b.x - a.x + 1) * double(b.y - a.y + 1) *
+           double(b.z - a.z + 1);
+  }
+
+  void insert(typename MeshT::FaceHandle f) {
+    const auto [lo, hi] = box(triangle(f));
+    const glm::ivec3 a = cell_of(lo);
+    const glm::ivec3 b = cell_of(hi);
+    // A long sliver (the flat underside's triangulation has many) would
+    // fill thousands of cells: it goes to the list every query visits.
+    if (cell_count(a, b) > kLargeCells) {
+      large_.push_back(f.idx());
+      return;
+    }
+    for (int x = a.x; x <= b.x; ++x) {
+      for (int y = a.y; y <= b.y; ++y) {
+        for (int z = a.z; z <= b.z; ++z) {
+          std::vector<int>& cell = cells_[key(x, y, z)];
+          if (cell.empty() || cell.back() != f.idx()) cell.push_back(f.idx());
+        }
+      }
+    }
+  }
+
+  bool refuse() {
+    ++refused_;
+    return true;
+  }
+
+  static constexpr double kLargeCells = 512.0;
+  double cell_mm_ = 1.0;
+  std::unordered_map<Cell, std::vector<int>> cells_;
+  std::vector<int> large_;
+  std::vector<std::uint32_t> seen_;      // per face: last query
+  std::vector<std::uint32_t> changing_;  // per face: last collapse tested
+  std::uint32_t query_stamp_ = 0;
+  std::uint32_t collapse_stamp_ = 0;
+  std::vector<IndexedTriangle> fresh_;
+  std::size_t refused_ = 0;
+};
+
+}  // namespace lsolid

@@ -1,0 +1,165 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+#include <unordered_map>
+#include <vector>
+
+#include "lsolid/mesh.hpp"
+
+namespace lsolid {
+
+/// The closest point of triangle abc to p: Ericson, "Real-Time Collision
+/// Detection", 2005, §5.1.5 (ClosestPtPointTriangle), by Voronoi regions.
+[[nodiscard]] inline glm::dvec3 closest_point_on_triangle(const glm::dvec3& p,
+                                                          const glm::dvec3& a,
+                                                          const glm::dvec3& b,
+                                                          const glm::dvec3& c) {
+  const glm::dvec3 ab = b - a;
+  const glm::dvec3 ac = c - a;
+  const glm::dvec3 ap = p - a;
+  const double d1 = glm::dot(ab, ap);
+  const double d2 = glm::dot(ac, ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return a;
+  const glm::dvec3 bp = p - b;
+  const double d3 = glm::dot(ab, bp);
+  const double d4 = glm::dot(ac, bp);
+  if (d3 >= 0.0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) return a + ab * (d1 / (d1 - d3));
+  const glm::dvec3 cp = p - c;
+  const double d5 = glm::dot(ab, cp);
+  const double d6 = glm::dot(ac, cp);
+  if (d6 >= 0.0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) return a + ac * (d2 / (d2 - d6));
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+    return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+  }
+  const double denominator = 1.0 / (va + vb + vc);
+  return a + ab * (vb * denominator) + ac * (vc * denominator);
+}
+
+/// A fixed surface that answers "is this point within d of it?" through a
+/// uniform grid of its triangles. The decimation keeps one of the input to
+/// test that new triangles do not stray from it.
+class SurfaceDistance {
+ public:
+  /// Indexes the triangles of `mesh`, kept by reference.
+  explicit SurfaceDistance(const TriangleMesh& mesh) : mesh_(mesh) {
+    double length = 0.0;
+    for (const auto& t : mesh.triangles) {
+      length += glm::distance(mesh.vertices[t[0]], mesh.vertices[t[1]]);
+    }
+    cell_mm_ = mesh.triangles.empty()
+                   ? 1.0
+                   : 2.0 * length / static_cast<double>(mesh.triangles.size());
+    seen_.assign(mesh.triangles.size(), 0);
+    for (std::uint32_t i = 0; i < mesh.triangles.size(); ++i) {
+      const auto& t = mesh.triangles[i];
+      const glm::dvec3& a = mesh.vertices[t[0]];
+      const glm::dvec3& b = mesh.vertices[t[1]];
+      const glm::dvec3& c = mesh.vertices[t[2]];
+      const glm::dvec3 lo = glm::min(glm::min(a, b), c);
+      const glm::dvec3 hi = glm::max(glm::max(a, b), c);
+      if (cell_count(lo, hi) > kLargeCells) {
+        large_.push_back(i);  // a long sliver: tested by every query
+      } else {
+        for_cells(lo, hi, [&](std::uint64_t key) { cells_[key].push_back(i); });
+      }
+    }
+  }
+
+  /// The distance from `p` to the nearest triangle, or `limit_mm` if none
+  /// lies nearer than that.
+  [[nodiscard]] double distance(const glm::dvec3& p, double limit_mm) {
+    double best = limit_mm * limit_mm;
+    ++stamp_;
+    const auto test = [&](const std::vector<std::uint32_t>& cell) {
+      for (const std::uint32_t i : cell) {
+        if (seen_[i] == stamp_) continue;
+        seen_[i] = stamp_;
+        const auto& t = mesh_.triangles[i];
+        const glm::dvec3 d = closest_point_on_triangle(p, mesh_.vertices[t[0]],
+                                                       mesh_.vertices[t[1]],
+                                                       mesh_.vertices[t[2]]) -
+                             p;
+        best = std::min(best, glm::dot(d, d));
+      }
+    };
+    test(large_);
+    for_cells(p - limit_mm, p + limit_mm, [&](std::uint64_t key) {
+      const auto it = cells_.find(key);
+      if (it != cells_.end()) test(it->second);
+    });
+    return std::sqrt(best);
+  }
+
+  /// True when some triangle lies within `distance_mm` of `p`.
+  [[nodiscard]] bool within(const glm::dvec3& p, double distance_mm) {
+    const double squared = distance_mm * distance_mm;
+    ++stamp_;
+    bool found = false;
+    const auto test = [&](const std::vector<std::uint32_t>& cell) {
+      for (const std::uint32_t i : cell) {
+        if (seen_[i] == stamp_) continue;
+        seen_[i] = stamp_;
+        const auto& t = mesh_.triangles[i];
+        const glm::dvec3 q = closest_point_on_triangle(p, mesh_.vertices[t[0]],
+                                                       mesh_.vertices[t[1]],
+                                                       mesh_.vertices[t[2]]);
+        const glm::dvec3 d = q - p;
+        if (glm::dot(d, d) <= squared) {
+          found = true;
+          return;
+        }
+      }
+    };
+    test(large_);
+    for_cells(p - distance_mm, p + distance_mm, [&](std::uint64_t key) {
+      if (found) return;
+      const auto it = cells_.find(key);
+      if (it != cells_.end()) test(it->second);
+    });
+    return found;
+  }
+
+ private:
+  static constexpr double kLargeCells = 512.0;
+
+  double cell_count(const glm::dvec3& lo, const glm::dvec3& hi) const {
+    const glm::dvec3 n = glm::floor(hi / cell_mm_) - glm::floor(lo / cell_mm_);
+    return (n.x + 1.0) * (n.y + 1.0) * (n.z + 1.0);
+  }
+
+  template <typename Visit>
+  void for_cells(const glm::dvec3& lo, const glm::dvec3& hi, Visit visit) {
+    const glm::ivec3 a(glm::floor(lo / cell_mm_));
+    const glm::ivec3 b(glm::floor(hi / cell_mm_));
+    constexpr std::uint64_t mask = (1u << 21) - 1;
+    for (int x = a.x; x <= b.x; ++x) {
+      for (int y = a.y; y <= b.y; ++y) {
+        for (int z = a.z; z <= b.z; ++z) {
+          visit((std::uint64_t(x) & mask) | ((std::uint64_t(y) & mask) << 21) |
+                ((std::uint64_t(z) & mask) << 42));
+        }
+      }
+    }
+  }
+
+  const TriangleMesh& mesh_;
+  double cell_mm_ = 1.0;
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
+  std::vector<std::uint32_t> large_;
+  std::vector<std::uint32_t> seen_;
+  std::uint32_t stamp_ = 0;
+};
+
+}  // namespace lsolid

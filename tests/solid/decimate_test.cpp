@@ -1,0 +1,160 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#include "lsolid/decimate.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <tuple>
+
+#include "lsolid/distance.hpp"
+#include "lsolid/errors.hpp"
+#include "lsolid/solid.hpp"
+#include "lsolid/validate.hpp"
+#include "lsys/parser.hpp"
+#include "support/core_helpers.hpp"
+#include "support/mesh_checks.hpp"
+
+namespace lsolid {
+namespace {
+
+using testing::box_mesh;
+using testing::expect_printable;
+
+// A cube of side 10 mm with every face cut into n × n squares.
+TriangleMesh fine_cube(int n) {
+  TriangleMesh coarse = box_mesh({0, 0, 0}, {10, 10, 10});
+  TriangleMesh out;
+  for (const auto& t : coarse.triangles) {
+    const glm::dvec3 a = coarse.vertices[t[0]];
+    const glm::dvec3 b = coarse.vertices[t[1]];
+    const glm::dvec3 c = coarse.vertices[t[2]];
+    // Barycentric subdivision of each triangle into n² triangles.
+    const auto at = [&](int i, int j) {
+      return a + (b - a) * (double(i) / n) + (c - a) * (double(j) / n);
+    };
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; i + j < n; ++j) {
+        TriangleMesh piece;
+        piece.vertices = {at(i, j), at(i + 1, j), at(i, j + 1)};
+        piece.triangles = {{0, 1, 2}};
+        append(out, piece);
+        if (i + j + 1 < n) {
+          piece.vertices = {at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)};
+          append(out, piece);
+        }
+      }
+    }
+  }
+  return round_to_float(out);
+}
+
+// The union of a grammar, undecimated, as the pipeline hands it on.
+TriangleMesh union_of(const lsys::Grammar& grammar, int n) {
+  return build_solid(grammar, {.derivation = {.derivation_length = n},
+                               .decimate = false})
+      .mesh;
+}
+
+std::set<std::tuple<double, double, double>> coordinates(
+    const TriangleMesh& mesh) {
+  std::set<std::tuple<double, double, double>> out;
+  for (const glm::dvec3& p : mesh.vertices) out.emplace(p.x, p.y, p.z);
+  return out;
+}
+
+TEST(Decimate, ReducesAFinelyCutCubeToTwelveTriangles) {
+  const TriangleMesh cube = fine_cube(4);
+  ASSERT_EQ(cube.triangles.size(), 12u * 16u);
+  const Decimated d = decimate(cube);
+  EXPECT_EQ(d.mesh.triangles.size(), 12u);
+  EXPECT_EQ(d.stats.triangles_before, 192u);
+  EXPECT_EQ(d.stats.triangles_after, 12u);
+  EXPECT_NEAR(signed_volume(d.mesh), 1000.0, 1e-9);
+  EXPECT_LT(d.stats.max_deviation_mm, 1e-9);
+  expect_printable(d.mesh);
+}
+
+TEST(Decimate, KeepsTheBushValidAndWithinTolerance) {
+  const TriangleMesh bush = union_of(
+      lsys::testing::parse_file("printables/abop-1.25-bush.ls",
+                                {.extra_settings = print_setting_names()}),
+      4);
+  const Decimated d = decimate(bush, {.tolerance_mm = 0.05});
+  EXPECT_LT(d.stats.triangles_after, d.stats.triangles_before);
+  expect_printable(d.mesh);
+  EXPECT_GT(d.stats.max_deviation_mm, 0.0);
+  EXPECT_LE(d.stats.max_deviation_mm, 0.05);
+  // Measured again, independently of the report.
+  EXPECT_LE(hausdorff_distance_mm(bush, d.mesh, 0.002), 0.05 + 0.002);
+  // Collapses only remove vertices: the rest keep their coordinates.
+  const auto before = coordinates(bush);
+  for (const glm::dvec3& p : d.mesh.vertices) {
+    EXPECT_TRUE(before.count({p.x, p.y, p.z}) == 1);
+  }
+}
+
+TEST(Decimate, TheGuardIsWhatKeepsAHardDecimationValid) {
+  // A cap far below what 0.05 mm allows forces collapses that OpenMesh's own
+  // modules accept although they make the bush cut itself (23 pairs when
+  // measured); the guard refuses those.
+  const TriangleMesh bush = union_of(
+      lsys::testing::parse_file("printables/abop-1.25-bush.ls",
+                                {.extra_settings = print_setting_names()}),
+      4);
+  const Decimated unguarded = decimate(bush, {.max_triangles = 800,
+                                              .refuse_intersections = false,
+                                              .measure_deviation = false});
+  EXPECT_GT(validate(unguarded.mesh).self_intersecting_pairs, 0u);
+  const Decimated guarded =
+      decimate(bush, {.max_triangles = 800, .measure_deviation = false});
+  EXPECT_GT(guarded.stats.refused_intersections, 0u);
+  EXPECT_LT(guarded.stats.triangles_after, bush.triangles.size() / 5);
+  expect_printable(guarded.mesh);
+}
+
+TEST(Decimate, ReachesATriangleCapBeyondTheTolerance) {
+  const TriangleMesh bush = union_of(
+      lsys::testing::parse_file("printables/abop-1.25-bush.ls",
+                                {.extra_settings = print_setting_names()}),
+      4);
+  const Decimated d = decimate(bush, {.max_triangles = 1500});
+  EXPECT_TRUE(d.stats.reached_max_triangles);
+  EXPECT_LE(d.mesh.triangles.size(), 1500u);
+  EXPECT_GT(d.stats.max_deviation_mm, 0.05);
+  expect_printable(d.mesh);
+}
+
+TEST(Decimate, TheHilbertCubeHasNothingToRemoveWithinTolerance) {
+  // Every vertex of its mitred tube is a corner: no collapse stays within
+  // 0.05 mm, and the mesh comes back as it was.
+  const TriangleMesh cube = union_of(
+      lsys::testing::parse_file("printables/hilbert-cube.ls",
+                                {.extra_settings = print_setting_names()}),
+      2);
+  const Decimated d = decimate(cube);
+  EXPECT_EQ(d.mesh.triangles.size(), cube.triangles.size());
+  EXPECT_EQ(d.stats.collapses, 0u);
+  expect_printable(d.mesh);
+}
+
+TEST(Decimate, SaysWhenTheCapCannotBeReached) {
+  const Decimated d =
+      decimate(box_mesh({0, 0, 0}, {1, 1, 1}), {.max_triangles = 4});
+  EXPECT_FALSE(d.stats.reached_max_triangles);
+  EXPECT_EQ(d.mesh.triangles.size(), 12u);
+}
+
+TEST(Decimate, RefusesAToleranceThatIsNotPositive) {
+  EXPECT_THROW(std::ignore = decimate(fine_cube(2), {.tolerance_mm = 0.0}),
+               GeometryError);
+}
+
+TEST(Decimate, RefusesANonManifoldMesh) {
+  TriangleMesh fan = box_mesh({0, 0, 0}, {1, 1, 1});
+  fan.triangles.push_back(fan.triangles[0]);
+  EXPECT_THROW(std::ignore = decimate(fan), GeometryError);
+}
+
+}  // namespace
+}  // namespace lsolid

@@ -1,15 +1,18 @@
 // Copyright 2026 the lsolid authors
 // SPDX-License-Identifier: MIT
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <unistd.h>
 
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <optional>
 
 #include "commands.hpp"
 #include "json.hpp"
+#include "lsolid/colors.hpp"
 #include "lsolid/errors.hpp"
 #include "lsolid/mesh_io.hpp"
 #include "lsolid/overhang.hpp"
@@ -39,7 +42,12 @@ void print_report(const SolidReport& r, bool united) {
         r.union_stats.booleans, r.union_stats.rounded,
         r.union_stats.concatenations, r.union_stats.retries, r.cavities_filled);
   }
-  if (r.placement.lies_flat) {
+  if (r.placement.lies_flat && r.placement.parts_left_uncut > 0) {
+    fmt::print(
+        "placement: planar, lying flat on round undersides; not cut flat, "
+        "as {} parts would not stay printable cut\n",
+        r.placement.parts_left_uncut);
+  } else if (r.placement.lies_flat) {
     fmt::print(
         "placement: planar, lying flat; underside cut flat {:.2f} mm below "
         "the branches' centre plane\n",
@@ -111,7 +119,8 @@ std::string json_report(const SolidReport& r, const OverhangReport& over,
       "{{\"output\": {}, \"written\": {}, \"united\": {}, \"segments\": {}, "
       "\"leaves\": {}, \"tubes\": {}, \"junction_hulls\": {}, \"joints\": {}, "
       "\"leaf_plates\": {}, \"booleans\": {}, \"mm_per_unit\": {}, "
-      "\"base\": {}, \"lies_flat\": {}, \"decimation\": {}, "
+      "\"base\": {}, \"lies_flat\": {}, \"underside_cut_mm\": {}, "
+      "\"decimation\": {}, "
       "\"triangles\": {}, "
       "\"volume_mm3\": {}, "
       "\"bounds\": {{\"min\": {}, \"max\": {}}}, \"printable\": {}, "
@@ -125,7 +134,7 @@ std::string json_report(const SolidReport& r, const OverhangReport& over,
       p.has_base ? fmt::format("{{\"radius_mm\": {}, \"thickness_mm\": {}}}",
                                p.base_radius_mm, p.base_thickness_mm)
                  : std::string("null"),
-      p.lies_flat,
+      p.lies_flat, p.cut_depth_mm,
       r.decimated
           ? fmt::format(
                 "{{\"triangles_before\": {}, \"triangles_after\": {}, "
@@ -146,6 +155,33 @@ std::string json_report(const SolidReport& r, const OverhangReport& over,
 
 }  // namespace
 
+namespace {
+
+// The colours written, and with --multi-material the volumes.
+void print_colors(const Solid& solid) {
+  std::map<int, std::size_t> triangles;
+  for (const int c : solid.colors) ++triangles[c];
+  if (triangles.empty()) triangles[0] = solid.mesh.triangles.size();
+  std::vector<std::string> names;
+  for (const auto& [color, count] : triangles) {
+    names.push_back(fmt::format("{} {} ({} triangles)", color,
+                                hex(palette_color(color)), count));
+  }
+  fmt::print("colours: {}\n", fmt::join(names, ", "));
+  if (solid.volumes.empty()) return;
+  std::vector<std::string> volumes;
+  for (const ColoredMesh& v : solid.volumes) {
+    volumes.push_back(fmt::format("colour {} {:.1f} mm³",
+                                  v.colors.empty() ? 0 : v.colors.front(),
+                                  signed_volume(v.mesh)));
+  }
+  fmt::print("volumes: {} for {} extruders, not overlapping: {}\n",
+             solid.volumes.size(), solid.volumes.size(),
+             fmt::join(volumes, ", "));
+}
+
+}  // namespace
+
 int run_build(const BuildCommand& command) {
   std::filesystem::path output = command.output;
   if (output.empty()) {
@@ -160,13 +196,21 @@ int run_build(const BuildCommand& command) {
     throw lsys::ParseError(lsys::Diagnostic{
         .file = "--output",
         .message = "unknown output format '" + output.extension().string() +
-                   "': use .stl, .off or .scad"});
+                   "': use .stl, .off, .scad, .3mf or .obj"});
   }
   if (command.ascii && format != MeshFormat::StlAscii) {
     throw lsys::ParseError(lsys::Diagnostic{
         .file = "--ascii",
         .message = "--ascii is for STL; '" + output.filename().string() +
                    "' is not an STL file"});
+  }
+  const bool colored =
+      format == MeshFormat::ThreeMf || format == MeshFormat::Obj;
+  if (command.multi_material && !colored) {
+    throw lsys::ParseError(lsys::Diagnostic{
+        .file = "--multi-material",
+        .message = "volumes per colour need a .3mf or .obj output, not '" +
+                   output.filename().string() + "'"});
   }
   const std::filesystem::path preview = command.preview;
   std::string preview_ext = preview.extension().string();
@@ -198,7 +242,11 @@ int run_build(const BuildCommand& command) {
   options.unite = !command.no_union;
   options.decimate = !command.no_decimate;
   options.max_triangles = command.max_triangles;
-  options.float_coordinates = format != MeshFormat::Off;
+  // 3MF and STL store floats; OFF and OBJ are written to full precision.
+  options.float_coordinates =
+      format != MeshFormat::Off && format != MeshFormat::Obj;
+  options.colors = colored && options.unite;
+  options.multi_material = command.multi_material;
   const bool text = !command.quiet && !command.json;
   // A progress bar on a terminal only: redrawn in place on standard error,
   // and wiped before the report.
@@ -220,6 +268,7 @@ int run_build(const BuildCommand& command) {
   if (bar) std::fprintf(stderr, "\r%50s\r", "");
   warn_about_polygons(solid.report.dropped);
   if (text) print_report(solid.report, options.unite);
+  if (text && colored) print_colors(solid);
   const OverhangReport over = overhang(solid.mesh);
   if (text) {
     fmt::print("overhang: {:.1f} mm² faces down more steeply than 45°: {}\n",
@@ -263,7 +312,14 @@ int run_build(const BuildCommand& command) {
                  output.string().c_str());
     return 3;
   }
-  write_mesh(solid.mesh, output, format);
+  if (!solid.volumes.empty()) {
+    write_colored(solid.volumes, output, format);
+  } else if (colored) {
+    write_colored({ColoredMesh{.mesh = solid.mesh, .colors = solid.colors}},
+                  output, format);
+  } else {
+    write_mesh(solid.mesh, output, format);
+  }
   if (text) {
     fmt::print(
         "wrote {}{}\n", output.string(),

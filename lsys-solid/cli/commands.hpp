@@ -86,6 +86,7 @@ struct BuildCommand {
   bool ascii = false;
   bool no_union = false;
   bool no_decimate = false;
+  bool multi_material = false;  ///< one volume per colour (3MF, OBJ)
   std::optional<std::size_t> max_triangles;
   std::string preview;  ///< a PNG to render the written mesh to, or empty
   std::optional<std::string> bed;  ///< the build volume, `220x220x250mm`
@@ -97,7 +98,7 @@ struct BuildCommand {
 /// @throws lsys::ParseError, GeometryError, IoError.
 int run_build(const BuildCommand& command);
 
-/// `lsolid check MESH`: validates an STL or OFF file.
+/// `lsolid check MESH`: validates an STL, OFF, 3MF or OBJ file.
 struct CheckCommand {
   std::string file;
   bool json = false;

@@ -43,7 +43,8 @@ int main(int argc, char** argv) {
   lsolid::cli::add_grammar_options(app, build.input, true, false);
   app.add_option(
       "-o,--output", build.output,
-      "output file: .stl (binary), .off or .scad (OpenSCAD); default FILE.stl");
+      "output file: .stl (binary), .off, .scad (OpenSCAD), .3mf or .obj (with "
+      "colours); default FILE.stl");
   app.add_flag("--ascii", build.ascii, "write ASCII STL");
   auto* bed = app.add_option(
       "--bed", build.bed,
@@ -58,8 +59,13 @@ int main(int argc, char** argv) {
                "print the report as one JSON object instead of text");
   app.add_option("--preview", build.preview,
                  "also render the mesh, shaded, to this PNG (offscreen)");
-  app.add_flag("--no-union", build.no_union,
-               "write the overlapping parts without uniting them (debugging)");
+  auto* no_union = app.add_flag(
+      "--no-union", build.no_union,
+      "write the overlapping parts without uniting them (debugging)");
+  app.add_flag("--multi-material", build.multi_material,
+               "in a .3mf or .obj, one volume per colour, not overlapping, "
+               "for a printer with an extruder per colour")
+      ->excludes(no_union);
   auto* no_decimate = app.add_flag(
       "--no-decimate", build.no_decimate,
       "keep every triangle of the union (decimation is on by default, within "

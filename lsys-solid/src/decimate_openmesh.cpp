@@ -271,7 +271,11 @@ double sampled_distance(const TriangleMesh& from, SurfaceDistance& to,
       for (int j = 0; i + j <= steps; ++j) {
         const glm::dvec3 p =
             a + (b - a) * (double(i) / steps) + (c - a) * (double(j) / steps);
-        worst = std::max(worst, to.distance(p, limit_mm));
+        // Only a point farther than the worst so far can change it, and
+        // most points find a triangle that near at the first try.
+        if (!to.within(p, worst)) {
+          worst = std::max(worst, to.distance(p, limit_mm));
+        }
       }
     }
   }

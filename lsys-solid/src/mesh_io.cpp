@@ -1,8 +1,9 @@
 // Copyright 2026 the lsolid authors
 // SPDX-License-Identifier: MIT
 //
-// STL (binary and ASCII) and OFF, written through a temporary file that is
-// renamed into place, so an output is complete or absent.
+// STL (binary and ASCII), OFF, SCAD and OBJ, written through a temporary
+// file that is renamed into place, so an output is complete or absent; 3MF
+// is encoded by lib3mf in mesh_3mf.cpp.
 #include "lsolid/mesh_io.hpp"
 
 #include <cctype>
@@ -13,10 +14,12 @@
 #include <fstream>
 #include <glm/geometric.hpp>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <unordered_map>
 
 #include "atomic_write.hpp"
+#include "mesh_3mf.hpp"
 #include "lsolid/errors.hpp"
 #include "vertex_key.hpp"
 
@@ -266,8 +269,150 @@ std::string encode(const TriangleMesh& mesh, MeshFormat format,
       out += "  ], convexity = 10);\n}\n\n" + name + "();\n";
       return out;
     }
+    case MeshFormat::ThreeMf:
+    case MeshFormat::Obj:
+      break;  // written by write_colored
   }
   return out;
+}
+
+
+// Wavefront OBJ: `v x y z` and `f a b c ...` (1-based, negative from the
+// end, `a/t/n` forms), faces fanned; `o` starts a volume and `usemtl
+// colour_N` sets the colour of the faces that follow.
+std::vector<ColoredMesh> read_obj(const std::string& data,
+                                  const std::filesystem::path& path) {
+  std::istringstream in(data);
+  std::string line;
+  std::vector<glm::dvec3> points;
+  std::vector<ColoredMesh> volumes(1);
+  std::unordered_map<std::uint32_t, std::uint32_t> local;
+  int color = 0;
+  std::size_t number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    std::istringstream words(line);
+    std::string tag;
+    words >> tag;
+    const auto bad = [&](const std::string& what) {
+      fail(path, "line " + std::to_string(number) + ": " + what);
+    };
+    if (tag == "v") {
+      glm::dvec3 p;
+      if (!(words >> p.x >> p.y >> p.z)) bad("bad vertex");
+      points.push_back(p);
+    } else if (tag == "o" || tag == "g") {
+      if (!volumes.back().mesh.triangles.empty()) {
+        volumes.emplace_back();
+        local.clear();
+      }
+    } else if (tag == "usemtl") {
+      std::string name;
+      words >> name;
+      color = 0;
+      if (name.starts_with("colour_")) {
+        try {
+          color = std::stoi(name.substr(7));
+        } catch (const std::exception&) {
+          color = 0;
+        }
+      }
+    } else if (tag == "f") {
+      std::vector<std::uint32_t> polygon;
+      std::string corner;
+      while (words >> corner) {
+        long index = 0;
+        try {
+          index = std::stol(corner.substr(0, corner.find('/')));
+        } catch (const std::exception&) {
+          bad("bad face");
+        }
+        if (index < 0) index += static_cast<long>(points.size()) + 1;
+        if (index < 1 || index > static_cast<long>(points.size())) {
+          bad("a face names a missing vertex");
+        }
+        const auto global = static_cast<std::uint32_t>(index - 1);
+        ColoredMesh& v = volumes.back();
+        const auto [it, inserted] = local.try_emplace(
+            global, static_cast<std::uint32_t>(v.mesh.vertices.size()));
+        if (inserted) v.mesh.vertices.push_back(points[global]);
+        polygon.push_back(it->second);
+      }
+      if (polygon.size() < 3) bad("a face has fewer than 3 vertices");
+      for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
+        volumes.back().mesh.triangles.push_back(
+            {polygon[0], polygon[k], polygon[k + 1]});
+        volumes.back().colors.push_back(color);
+      }
+    }
+  }
+  if (volumes.back().mesh.triangles.empty() && volumes.size() > 1) {
+    volumes.pop_back();
+  }
+  return volumes;
+}
+
+std::string obj_material(int color) {
+  return "colour_" + std::to_string(color);
+}
+
+std::string encode_mtl(const std::vector<ColoredMesh>& volumes) {
+  std::map<int, bool> used;
+  for (const ColoredMesh& v : volumes) {
+    if (v.colors.empty()) used[0] = true;
+    for (const int c : v.colors) used[c] = true;
+  }
+  std::string out = "# lsolid: the turtle's colours (ABOP's ')\n";
+  char line[160];
+  for (const auto& [color, _] : used) {
+    const Rgb rgb = palette_color(color);
+    std::snprintf(line, sizeof(line),
+                  "\nnewmtl %s\nKa 0 0 0\nKd %.6g %.6g %.6g\nKs 0 0 0\nd 1\n"
+                  "illum 1\n",
+                  obj_material(color).c_str(), rgb.r / 255.0, rgb.g / 255.0,
+                  rgb.b / 255.0);
+    out += line;
+  }
+  return out;
+}
+
+std::string encode_obj(const std::vector<ColoredMesh>& volumes,
+                       const std::filesystem::path& mtl) {
+  std::string out =
+      "# lsolid: closed 2-manifold volumes in millimetres\nmtllib " +
+      mtl.filename().string() + "\n";
+  char line[160];
+  std::size_t base = 1;
+  for (std::size_t i = 0; i < volumes.size(); ++i) {
+    const ColoredMesh& v = volumes[i];
+    out += volumes.size() == 1 ? std::string("o model\n")
+                               : "o volume_" + std::to_string(i + 1) + "\n";
+    for (const glm::dvec3& p : v.mesh.vertices) {
+      std::snprintf(line, sizeof(line), "v %.17g %.17g %.17g\n", p.x, p.y,
+                    p.z);
+      out += line;
+    }
+    int current = -1;
+    for (std::size_t t = 0; t < v.mesh.triangles.size(); ++t) {
+      const int color = v.colors.empty() ? 0 : v.colors[t];
+      if (color != current) {
+        out += "usemtl " + obj_material(color) + "\n";
+        current = color;
+      }
+      const auto& tri = v.mesh.triangles[t];
+      out += "f " + std::to_string(base + tri[0]) + " " +
+             std::to_string(base + tri[1]) + " " +
+             std::to_string(base + tri[2]) + "\n";
+    }
+    base += v.mesh.vertices.size();
+  }
+  return out;
+}
+
+TriangleMesh merged(const std::vector<ColoredMesh>& volumes) {
+  TriangleMesh mesh;
+  for (const ColoredMesh& v : volumes) append(mesh, v.mesh);
+  return mesh;
 }
 
 }  // namespace
@@ -278,17 +423,20 @@ MeshFormat format_for(const std::filesystem::path& path, bool ascii) {
     return ascii ? MeshFormat::StlAscii : MeshFormat::StlBinary;
   if (ext == ".off") return MeshFormat::Off;
   if (ext == ".scad") return MeshFormat::Scad;
+  if (ext == ".3mf") return MeshFormat::ThreeMf;
+  if (ext == ".obj") return MeshFormat::Obj;
   throw IoError(path.string() + ": unknown output format '" + ext +
-                "' (use .stl, .off or .scad)");
+                "' (use .stl, .off, .scad, .3mf or .obj)");
 }
 
 TriangleMesh read_mesh(const std::filesystem::path& path) {
+  const std::string ext = lower_extension(path);
+  if (ext == ".3mf" || ext == ".obj") return merged(read_colored(path));
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, std::string("cannot read: ") + std::strerror(errno));
   std::ostringstream buffer;
   buffer << in.rdbuf();
   const std::string data = buffer.str();
-  const std::string ext = lower_extension(path);
   if (data.starts_with("OFF") || ext == ".off") return read_off(data, path);
   if (data.size() >= 84) {
     std::uint32_t count = 0;
@@ -299,9 +447,49 @@ TriangleMesh read_mesh(const std::filesystem::path& path) {
   fail(path, "not an STL or OFF file");
 }
 
+std::vector<ColoredMesh> read_colored(const std::filesystem::path& path) {
+  const std::string ext = lower_extension(path);
+  if (ext == ".3mf") {
+    if (!std::filesystem::exists(path)) fail(path, "cannot read: no such file");
+    return decode_3mf(path);
+  }
+  if (ext == ".obj") {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail(path, std::string("cannot read: ") + std::strerror(errno));
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    return read_obj(buffer.str(), path);
+  }
+  TriangleMesh mesh = read_mesh(path);
+  const std::size_t n = mesh.triangles.size();
+  return {ColoredMesh{.mesh = std::move(mesh), .colors = std::vector<int>(n, 0)}};
+}
+
 void write_mesh(const TriangleMesh& mesh, const std::filesystem::path& path,
                 MeshFormat format) {
+  if (format == MeshFormat::ThreeMf || format == MeshFormat::Obj) {
+    write_colored({ColoredMesh{.mesh = mesh, .colors = {}}}, path, format);
+    return;
+  }
   write_file_atomically(path, encode(mesh, format, path));
+}
+
+void write_colored(const std::vector<ColoredMesh>& volumes,
+                   const std::filesystem::path& path, MeshFormat format) {
+  switch (format) {
+    case MeshFormat::ThreeMf:
+      write_file_atomically(path, encode_3mf(volumes));
+      return;
+    case MeshFormat::Obj: {
+      std::filesystem::path mtl = path;
+      mtl.replace_extension(".mtl");
+      write_file_atomically(mtl, encode_mtl(volumes));
+      write_file_atomically(path, encode_obj(volumes, mtl));
+      return;
+    }
+    default:
+      write_file_atomically(path, encode(merged(volumes), format, path));
+  }
 }
 
 }  // namespace lsolid

@@ -130,6 +130,7 @@ struct Junction {
 struct Piece {
   std::vector<std::array<std::uint32_t, 3>> triangles;
   std::string label;
+  int color = 0;
   std::int32_t hull_of = -1;           // the junction this hull meshes
   std::vector<std::int32_t> attached;  // hull junctions at a tube's ends
 };
@@ -164,7 +165,8 @@ class PartBuilder {
       set_.parts.push_back(
           Part{sphere(joint.center, joint.radius, index++),
                fmt::format("joint at ({:.3f}, {:.3f}, {:.3f}) mm",
-                           joint.center.x, joint.center.y, joint.center.z)});
+                           joint.center.x, joint.center.y, joint.center.z),
+               joint.color});
       ++set_.joints;
     }
     return std::move(set_);
@@ -174,6 +176,7 @@ class PartBuilder {
   struct Joint {
     glm::dvec3 center;
     double radius;  // the largest cap it must enclose
+    int color;      // of the first segment that asked for it
   };
 
   // Meshes everything with the current choice of hull junctions. Returns the
@@ -337,6 +340,14 @@ class PartBuilder {
     };
     end_of(stretch_in(j.incoming), -1.0);
     for (const std::int32_t o : j.outgoing) end_of(stretch_out(o), 1.0);
+    // A part has one colour: where colours meet, the union joins the tubes
+    // (and --multi-material gives each colour its own volume).
+    for (const std::vector<std::int32_t>& stretch : j.stretches) {
+      for (const std::int32_t i : stretch) {
+        if (options_.split_colors && seg(i).color != seg(j.incoming).color)
+          return;
+      }
+    }
     const std::size_t n = dirs.size();
     const double widest = *std::max_element(radii.begin(), radii.end());
     const double margin = kJunctionMargin * widest;
@@ -438,11 +449,11 @@ class PartBuilder {
     return j.places[skip + static_cast<std::size_t>(it - j.outgoing.begin())];
   }
 
-  void add_joint(const glm::dvec3& center, double radius) {
+  void add_joint(const glm::dvec3& center, double radius, int color) {
     const auto [it, inserted] =
         joint_index_.emplace(node_key(center), joints_.size());
     if (inserted) {
-      joints_.push_back(Joint{center, radius});
+      joints_.push_back(Joint{center, radius, color});
     } else {
       joints_[it->second].radius = std::max(joints_[it->second].radius, radius);
     }
@@ -469,8 +480,10 @@ class PartBuilder {
       first = place.segment;
       start_local = place.local_mm;
     } else if (seg(first).parent >= 0) {
-      add_joint(seg(first).p0, std::max(seg(first).start_diameter / 2.0,
-                                        node_radius(seg(first).parent)));
+      add_joint(seg(first).p0,
+                std::max(seg(first).start_diameter / 2.0,
+                         node_radius(seg(first).parent)),
+                seg(seg(first).parent).color);
     }
     std::vector<std::int32_t> run{first};
     run_.start(first);
@@ -504,7 +517,8 @@ class PartBuilder {
                                   : junctions_[static_cast<std::size_t>(ahead)]
                                         .places.front()
                                         .local_mm;
-      if (start_extent + extent <= kMitreBudget * length(seg(last)) &&
+      if ((!options_.split_colors || seg(next).color == seg(last).color) &&
+          start_extent + extent <= kMitreBudget * length(seg(last)) &&
           extent + end_need <= kMitreBudget * length(seg(next)) &&
           !run_.comes_near(next)) {
         run.push_back(next);
@@ -513,7 +527,7 @@ class PartBuilder {
         continue;
       }
       emit_tube(run, run_start, start_local, -1, 0.0);
-      add_joint(seg(last).p1, r);
+      add_joint(seg(last).p1, r, seg(last).color);
       run.assign(1, next);
       run_.start(next);
       run_start = -1;
@@ -740,6 +754,7 @@ class PartBuilder {
     piece.label = front == back
                       ? fmt::format("tube of segment {}", front)
                       : fmt::format("tube of segments {}-{}", front, back);
+    piece.color = seg(front).color;
     pieces_.push_back(std::move(piece));
     ++set_.tubes;
   }
@@ -783,6 +798,7 @@ class PartBuilder {
         continue;
       }
       piece.hull_of = static_cast<std::int32_t>(j);
+      piece.color = seg(junction.incoming).color;
       piece.label = fmt::format("junction at ({:.3f}, {:.3f}, {:.3f}) mm",
                                 junction.at.x, junction.at.y, junction.at.z);
       hull_piece_[j] = static_cast<std::int32_t>(pieces_.size());
@@ -886,7 +902,8 @@ class PartBuilder {
                    ? pieces_[group[0]].label
                    : fmt::format("{} tubes joined at {} junctions, from the {}",
                                  tubes, group.size() - tubes,
-                                 pieces_[group[0]].label)});
+                                 pieces_[group[0]].label),
+               pieces_[group[0]].color});
     }
     if (!revert.empty()) {
       std::sort(revert.begin(), revert.end());
@@ -998,7 +1015,8 @@ class PartBuilder {
       mesh.triangles.push_back({i, j + count, i + count});
     }
     set_.parts.push_back(
-        Part{std::move(mesh), fmt::format("leaf plate of polygon {}", index)});
+        Part{std::move(mesh), fmt::format("leaf plate of polygon {}", index),
+             polygon.color});
     ++set_.plates;
     // A plate that starts on its stem's axis, where the stem goes on, cuts
     // through the tube and fuses with it in the union. At a tip the plate
@@ -1011,7 +1029,8 @@ class PartBuilder {
       const bool goes_on = continuation_[i] >= 0 || end_junction_[i] >= 0;
       if (from_end <= stem_radius &&
           !(goes_on && from_end <= kOnAxis * stem_radius)) {
-        add_joint(stem.p1, std::max(stem_radius, 0.75 * thickness));
+        add_joint(stem.p1, std::max(stem_radius, 0.75 * thickness),
+                  stem.color);
       }
     }
   }

@@ -8,6 +8,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
+#include <type_traits>
 #include <unordered_map>
 #include <vector>
 
@@ -69,8 +70,18 @@ class SurfaceDistance {
       const glm::dvec3& c = mesh.vertices[t[2]];
       const glm::dvec3 lo = glm::min(glm::min(a, b), c);
       const glm::dvec3 hi = glm::max(glm::max(a, b), c);
-      if (cell_count(lo, hi) > kLargeCells) {
-        large_.push_back(i);  // a long sliver: tested by every query
+      const double cells = cell_count(lo, hi);
+      if (cells > kHugeCells) {
+        large_.push_back(i);  // tested by every query
+      } else if (cells > kLargeCells) {
+        // A long sliver across many cells, such as the flat underside's:
+        // only the cells it passes through, those whose centre lies within
+        // half a cell's diagonal of it.
+        const double reach = 0.8660254037844387 * cell_mm_;
+        for_cells(lo, hi, [&](std::uint64_t key, const glm::dvec3& centre) {
+          const glm::dvec3 d = closest_point_on_triangle(centre, a, b, c) - centre;
+          if (glm::dot(d, d) <= reach * reach) cells_[key].push_back(i);
+        });
       } else {
         for_cells(lo, hi, [&](std::uint64_t key) { cells_[key].push_back(i); });
       }
@@ -80,25 +91,36 @@ class SurfaceDistance {
   /// The distance from `p` to the nearest triangle, or `limit_mm` if none
   /// lies nearer than that.
   [[nodiscard]] double distance(const glm::dvec3& p, double limit_mm) {
+    // Searches a growing cube: a triangle within r of p has its box in the
+    // cube of half-side r around p, so a nearest one found within r is the
+    // nearest of all. Most points lie on or near the surface and stop at
+    // the first cube, where the whole limit's cube would visit thousands
+    // of cells.
+    double reach = std::min(limit_mm, cell_mm_ / 4.0);
     double best = limit_mm * limit_mm;
-    ++stamp_;
-    const auto test = [&](const std::vector<std::uint32_t>& cell) {
-      for (const std::uint32_t i : cell) {
-        if (seen_[i] == stamp_) continue;
-        seen_[i] = stamp_;
-        const auto& t = mesh_.triangles[i];
-        const glm::dvec3 d = closest_point_on_triangle(p, mesh_.vertices[t[0]],
-                                                       mesh_.vertices[t[1]],
-                                                       mesh_.vertices[t[2]]) -
-                             p;
-        best = std::min(best, glm::dot(d, d));
-      }
-    };
-    test(large_);
-    for_cells(p - limit_mm, p + limit_mm, [&](std::uint64_t key) {
-      const auto it = cells_.find(key);
-      if (it != cells_.end()) test(it->second);
-    });
+    for (;;) {
+      ++stamp_;
+      const auto test = [&](const std::vector<std::uint32_t>& cell) {
+        for (const std::uint32_t i : cell) {
+          if (seen_[i] == stamp_) continue;
+          seen_[i] = stamp_;
+          const auto& t = mesh_.triangles[i];
+          const glm::dvec3 d =
+              closest_point_on_triangle(p, mesh_.vertices[t[0]],
+                                        mesh_.vertices[t[1]],
+                                        mesh_.vertices[t[2]]) -
+              p;
+          best = std::min(best, glm::dot(d, d));
+        }
+      };
+      test(large_);
+      for_cells(p - reach, p + reach, [&](std::uint64_t key) {
+        const auto it = cells_.find(key);
+        if (it != cells_.end()) test(it->second);
+      });
+      if (best <= reach * reach || reach >= limit_mm) break;
+      reach = std::min(limit_mm, 2.0 * reach);
+    }
     return std::sqrt(best);
   }
 
@@ -133,12 +155,14 @@ class SurfaceDistance {
 
  private:
   static constexpr double kLargeCells = 512.0;
+  static constexpr double kHugeCells = double(1 << 22);
 
   double cell_count(const glm::dvec3& lo, const glm::dvec3& hi) const {
     const glm::dvec3 n = glm::floor(hi / cell_mm_) - glm::floor(lo / cell_mm_);
     return (n.x + 1.0) * (n.y + 1.0) * (n.z + 1.0);
   }
 
+  // Calls visit(key) or visit(key, centre) for every cell of the box.
   template <typename Visit>
   void for_cells(const glm::dvec3& lo, const glm::dvec3& hi, Visit visit) {
     const glm::ivec3 a(glm::floor(lo / cell_mm_));
@@ -147,8 +171,14 @@ class SurfaceDistance {
     for (int x = a.x; x <= b.x; ++x) {
       for (int y = a.y; y <= b.y; ++y) {
         for (int z = a.z; z <= b.z; ++z) {
-          visit((std::uint64_t(x) & mask) | ((std::uint64_t(y) & mask) << 21) |
-                ((std::uint64_t(z) & mask) << 42));
+          const std::uint64_t key = (std::uint64_t(x) & mask) |
+                                    ((std::uint64_t(y) & mask) << 21) |
+                                    ((std::uint64_t(z) & mask) << 42);
+          if constexpr (std::is_invocable_v<Visit, std::uint64_t>) {
+            visit(key);
+          } else {
+            visit(key, (glm::dvec3(x, y, z) + 0.5) * cell_mm_);
+          }
         }
       }
     }

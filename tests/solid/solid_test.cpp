@@ -92,11 +92,17 @@ TEST(Solid, APlanarFigureLiesFlatOnAFlatUnderside) {
   expect_printable(s.mesh, 1);
   EXPECT_TRUE(s.report.placement.lies_flat);
   EXPECT_FALSE(s.report.placement.has_base);
+  EXPECT_EQ(s.report.placement.parts_left_uncut, 0u);
   const Box box = s.report.validation.bounds;
   EXPECT_NEAR(box.min.z, 0.0, 1e-9);
-  // Lying down it is as tall as its tubes less the cut: 3/4 of a wall-thick
-  // tube at the thinnest, here all of one thickness.
-  EXPECT_LT(box.size().z, 0.8 * 2.0);
+  // Lying down it is as tall as its tubes less the cut, half a radius. All
+  // tubes are of one thickness here: whole, at least two radii (four cut
+  // depths) tall; cut, three and what the mitres and polygons reach beyond
+  // the round radius.
+  const double depth = s.report.placement.cut_depth_mm;
+  EXPECT_GT(depth, 0.0);
+  EXPECT_LT(box.size().z, 3.5 * depth);
+  EXPECT_GT(box.size().z, 2.5 * depth);
   EXPECT_NEAR(std::max(box.size().x, box.size().y), 50.0, 0.1);
   // The underside: faces in z = 0 facing down, under every tube.
   double flat_mm2 = 0.0;

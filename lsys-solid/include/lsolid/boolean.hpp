@@ -50,4 +50,13 @@ struct UnionResult {
 [[nodiscard]] UnionResult union_parts(
     std::vector<Part> parts, const std::function<void(double)>& progress = {});
 
+/// What of `a` lies outside `b` (CGAL's corefinement over exact
+/// constructions), rounded to doubles: the new vertices lie on `b`'s
+/// surface to within a rounding error, so the result meets `b` on shared
+/// faces without overlapping it. Empty when `b` covers `a`.
+/// @pre both are closed, outward and free of self-intersections.
+/// @throws GeometryError if CGAL fails.
+[[nodiscard]] TriangleMesh subtract(const TriangleMesh& a,
+                                    const TriangleMesh& b);
+
 }  // namespace lsolid

@@ -15,12 +15,20 @@ namespace lsolid {
 struct Part {
   TriangleMesh mesh;
   std::string label;  ///< what it is, for messages: "tube of segments 3-7"
+  /// The turtle's colour index (ABOP's `'`): that of its first segment or
+  /// its polygon; a joint takes its parent's. All it was built from has
+  /// this colour when PartOptions::split_colors is set.
+  int color = 0;
 };
 
 /// How to mesh the skeleton.
 struct PartOptions {
   double wall_mm = 0.8;        ///< leaf plate thickness
   double tolerance_mm = 0.05;  ///< chord error of tube cross-sections
+  /// One colour per part: tubes end where the colour changes and branches
+  /// of several colours meet at a joint sphere, not a hull. Coloured output
+  /// needs it; it costs booleans in the union where colours change often.
+  bool split_colors = false;
 };
 
 /// The parts and what they came from.

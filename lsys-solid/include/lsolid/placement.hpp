@@ -27,7 +27,9 @@ struct Placement {
   bool lies_flat = false;
   double cut_z_mm = 0.0;
   double cut_depth_mm = 0.0;  ///< how far below the skeleton's plane
-  /// Parts whose cut could not be rounded to doubles validly, left whole.
+  /// Parts whose cut would not be printable once rounded to doubles. When
+  /// there is any, no part is cut (`cut_z_mm` is 0): the model lies on its
+  /// round undersides rather than leave a part hanging below the bed.
   std::size_t parts_left_uncut = 0;
 };
 

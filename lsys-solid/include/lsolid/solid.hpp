@@ -6,8 +6,10 @@
 #include <functional>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 #include "lsolid/boolean.hpp"
+#include "lsolid/colors.hpp"
 #include "lsolid/decimate.hpp"
 #include "lsolid/mesh.hpp"
 #include "lsolid/placement.hpp"
@@ -33,8 +35,15 @@ struct SolidOptions {
   bool decimate = true;
   /// A cap on the triangles of the decimated mesh (`--max-triangles`).
   std::optional<std::size_t> max_triangles;
+  /// Colour each triangle by the turtle's colour index (for 3MF and OBJ).
+  /// Parts are then built one colour each (PartOptions::split_colors).
+  bool colors = false;
+  /// Also build one volume per colour, not overlapping (`--multi-material`;
+  /// needs `unite`).
+  bool multi_material = false;
   /// Told how far the build is: the stage ("skeleton", "parts", "union",
-  /// "rounding", "decimation", "check") and the fraction of it done, 0 to 1,
+  /// "rounding", "decimation", "check", with multi_material "volumes") and
+  /// the fraction of it done, 0 to 1,
   /// from the thread that builds. Empty: not told.
   std::function<void(std::string_view stage, double fraction)> progress;
 };
@@ -47,6 +56,7 @@ struct StageSeconds {
   double round = 0.0;     ///< rounding to the file's precision, with repair
   double decimate = 0.0;  ///< decimation and measuring its deviation
   double check = 0.0;     ///< validation of the mesh as it will be written
+  double volumes = 0.0;   ///< the volumes per colour (multi_material)
 };
 
 /// What was built.
@@ -77,6 +87,14 @@ struct SolidReport {
 struct Solid {
   TriangleMesh mesh;
   SolidReport report;
+  /// With SolidOptions::colors, the turtle's colour index of each triangle
+  /// of `mesh`; otherwise empty.
+  std::vector<int> colors;
+  /// With SolidOptions::multi_material, one volume per colour, in order of
+  /// colour; they meet on shared faces and together fill `mesh` (to the
+  /// decimation tolerance). Otherwise, or when `mesh` is not printable,
+  /// empty.
+  std::vector<ColoredMesh> volumes;
 };
 
 /// Derives, interprets, scales, meshes, unites and validates. The mesh is

@@ -409,4 +409,23 @@ UnionResult union_parts(std::vector<Part> parts,
   return Unioner(std::move(parts), progress).run();
 }
 
+TriangleMesh subtract(const TriangleMesh& a, const TriangleMesh& b) {
+  ExactMesh first = to_surface_mesh<ExactMesh>(a);
+  ExactMesh second = to_surface_mesh<ExactMesh>(b);
+  ExactMesh out;
+  bool ok = false;
+  try {
+    ok = PMP::corefine_and_compute_difference(first, second, out);
+  } catch (const std::exception& e) {
+    throw GeometryError(std::string("subtracting one volume from another "
+                                    "failed: ") +
+                        e.what());
+  }
+  if (!ok) {
+    throw GeometryError(
+        "subtracting one volume from another did not give a 2-manifold");
+  }
+  return to_triangle_mesh(out);
+}
+
 }  // namespace lsolid

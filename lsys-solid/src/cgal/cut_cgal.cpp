@@ -7,13 +7,24 @@
 // triangulates the plane's two large triangles around every crossing.
 // Exact coordinates (EPECK): the new vertices lie exactly in the plane, and
 // as z_mm is a double they keep it when rounded.
+//
+// The cutter is a tetrahedron standing on one large triangle in the plane,
+// not clip()'s plane overload: that one meshes the plane as a rectangle
+// whose diagonal runs through the model's centre, at 45 degrees. Along the
+// Koch island's mitred corners, on that diagonal, it made two vertices a
+// rounding error apart, which collapsed to one when rounded to doubles.
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/clip.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <array>
+#include <cmath>
+#include <numbers>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "conversion.hpp"
 #include "lsolid/cut.hpp"
@@ -25,6 +36,40 @@ namespace {
 using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
 namespace PMP = CGAL::Polygon_mesh_processing;
+
+// A tetrahedron holding everything of `mesh` above z_mm, with its base in
+// that plane and its other faces far outside the mesh. The base is
+// equilateral with an inradius of 10 reaches (the mesh's largest distance
+// from its centre) and the apex 10 reaches up: at any height h of the mesh
+// above z_mm the cross-section's inradius is 10 reaches (1 - h/(10 reach))
+// >= 9 reaches, so no side face touches the mesh.
+Mesh cutter_above(const TriangleMesh& mesh, double z_mm) {
+  glm::dvec3 lo(1e300);
+  glm::dvec3 hi(-1e300);
+  for (const glm::dvec3& p : mesh.vertices) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const glm::dvec3 centre = (lo + hi) / 2.0;
+  const double reach =
+      std::max(glm::length(hi - lo), std::fabs(z_mm - centre.z)) + 1.0;
+  const double r = 20.0 * reach;  // circumradius: twice the inradius
+  Mesh cutter;
+  std::array<Mesh::Vertex_index, 3> base;
+  for (int i = 0; i < 3; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / 3.0;
+    base[i] = cutter.add_vertex(Kernel::Point_3(
+        centre.x + r * std::cos(a), centre.y + r * std::sin(a), z_mm));
+  }
+  const Mesh::Vertex_index apex =
+      cutter.add_vertex(Kernel::Point_3(centre.x, centre.y, z_mm + 10.0 * reach));
+  // Outward: the base faces down, seen from below clockwise.
+  cutter.add_face(base[0], base[2], base[1]);
+  cutter.add_face(base[0], base[1], apex);
+  cutter.add_face(base[1], base[2], apex);
+  cutter.add_face(base[2], base[0], apex);
+  return cutter;
+}
 
 }  // namespace
 
@@ -40,9 +85,9 @@ TriangleMesh cut_below(const TriangleMesh& input, double z_mm) {
   }
   Mesh mesh;
   PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  Mesh cutter = cutter_above(input, z_mm);
   try {
-    // clip keeps the negative side of the plane: -z + z_mm < 0, z > z_mm.
-    const bool closed = PMP::clip(mesh, Kernel::Plane_3(0, 0, -1, z_mm),
+    const bool closed = PMP::clip(mesh, cutter,
                                   CGAL::parameters::clip_volume(true));
     if (!closed) throw GeometryError("CGAL could not close the cut");
     PMP::triangulate_faces(mesh);

@@ -11,7 +11,14 @@
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <cmath>
 
 #include <vector>
 
@@ -53,6 +60,37 @@ double hausdorff_distance_mm(const TriangleMesh& a, const TriangleMesh& b,
   const Mesh second = stitched(b);
   return PMP::bounded_error_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(
       first, second, error_bound_mm);
+}
+
+double overlap_depth_mm(const TriangleMesh& a, const TriangleMesh& b) {
+  const Mesh solid = stitched(b);
+  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+  Tree tree(faces(solid).first, faces(solid).second, solid);
+  tree.accelerate_distance_queries();
+  const CGAL::Side_of_triangle_mesh<Mesh, Kernel> side(tree);
+  const Box box = bounds(b);
+  double deepest = 0.0;
+  const auto sample = [&](const glm::dvec3& p) {
+    if (p.x < box.min.x || p.y < box.min.y || p.z < box.min.z ||
+        p.x > box.max.x || p.y > box.max.y || p.z > box.max.z) {
+      return;
+    }
+    const Kernel::Point_3 q(p.x, p.y, p.z);
+    if (side(q) != CGAL::ON_BOUNDED_SIDE) return;
+    deepest = std::max(deepest, std::sqrt(tree.squared_distance(q)));
+  };
+  for (const glm::dvec3& p : a.vertices) sample(p);
+  for (const auto& t : a.triangles) {
+    const glm::dvec3& p0 = a.vertices[t[0]];
+    const glm::dvec3& p1 = a.vertices[t[1]];
+    const glm::dvec3& p2 = a.vertices[t[2]];
+    sample((p0 + p1 + p2) / 3.0);
+    sample((p0 + p1) / 2.0);
+    sample((p1 + p2) / 2.0);
+    sample((p2 + p0) / 2.0);
+  }
+  return deepest;
 }
 
 }  // namespace lsolid

@@ -1,0 +1,75 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#include "lsolid/colors.hpp"
+
+#include <array>
+#include <fmt/format.h>
+#include <map>
+
+#include "surface_distance.hpp"
+
+namespace lsolid {
+namespace {
+
+// Filament-like colours for plants: bark, three greens for stems and
+// leaves, then flower colours. ABOP's figures use colour maps of this kind
+// (stem brown, leaves green, petals bright); cpfg reads them from a
+// colourmap file, which lsolid does not.
+constexpr std::array<Rgb, 10> kPalette{{{0x7B, 0x4A, 0x2A},
+                                        {0x2E, 0x6B, 0x2E},
+                                        {0x4C, 0x9A, 0x2A},
+                                        {0x8C, 0xC6, 0x3F},
+                                        {0xF2, 0xC0, 0x14},
+                                        {0xE8, 0x73, 0x1A},
+                                        {0xC8, 0x20, 0x2F},
+                                        {0x7A, 0x3E, 0x9D},
+                                        {0xF2, 0xF2, 0xF2},
+                                        {0x2A, 0x5C, 0xAA}}};
+
+}  // namespace
+
+Rgb palette_color(int index) noexcept {
+  return kPalette[static_cast<std::size_t>(index < 0 ? 0 : index) %
+                  kPalette.size()];
+}
+
+std::string hex(Rgb color) {
+  return fmt::format("#{:02X}{:02X}{:02X}", color.r, color.g, color.b);
+}
+
+std::vector<int> color_triangles(const TriangleMesh& mesh,
+                                 const std::vector<Part>& parts) {
+  std::vector<int> colors(mesh.triangles.size(), 0);
+  std::map<int, TriangleMesh> surfaces;
+  for (const Part& part : parts) append(surfaces[part.color], part.mesh);
+  if (surfaces.size() <= 1) {
+    if (!surfaces.empty()) colors.assign(colors.size(), surfaces.begin()->first);
+    return colors;
+  }
+  std::vector<std::pair<int, SurfaceDistance>> index;
+  index.reserve(surfaces.size());
+  for (const auto& [color, surface] : surfaces) {
+    index.emplace_back(color, SurfaceDistance(surface));
+  }
+  // Far enough for any part's surface near a triangle of the union: the
+  // decimation tolerance is a fraction of a millimetre.
+  constexpr double kLimitMm = 10.0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    const glm::dvec3 centre =
+        (mesh.vertices[tri[0]] + mesh.vertices[tri[1]] +
+         mesh.vertices[tri[2]]) /
+        3.0;
+    double best = kLimitMm * 2.0;
+    for (auto& [color, surface] : index) {
+      const double d = surface.distance(centre, kLimitMm);
+      if (d < best) {  // ascending colours: ties stay with the lower
+        best = d;
+        colors[t] = color;
+      }
+    }
+  }
+  return colors;
+}
+
+}  // namespace lsolid

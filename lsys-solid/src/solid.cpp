@@ -94,7 +94,7 @@ void cut_underside(std::vector<Part>& parts, Placement& placement) {
   std::vector<Part> cut_parts;
   cut_parts.reserve(parts.size());
   for (const Part& part : parts) {
-    Part cut{.mesh = {}, .label = part.label};
+    Part cut{.mesh = {}, .label = part.label, .color = part.color};
     if (bounds(part.mesh).min.z >= z) {
       cut.mesh = part.mesh;
     } else {

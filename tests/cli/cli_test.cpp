@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -314,13 +315,126 @@ TEST_F(Build, LeavesNothingBehindOnBadInput) {
   EXPECT_EQ(entries, 2U);
 }
 
+// A stem (colour 0) with a branch of colour 1 and one of colour 2.
+constexpr const char* kThreeColours =
+    "n=0, \u03B4=45\u00B0\nwidth: 0.2\n\u03C9: FF[+'F][-''F]F\n";
+
+TEST_F(Build, Writes3mfWithColoursThatPrusaSlicerOpens) {
+  use_printable("abop-1.25-bush", "bush.ls");
+  const auto r = run_command(lsolid() + " bush.ls -n 3 -o bush.3mf", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // Stems take colours 0-2, leaves three more (the bush's ' steps).
+  EXPECT_NE(r.out.find("colours: 0 #7B4A2A ("), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(", 3 #8CC63F ("), std::string::npos) << r.out;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.out, m, std::regex("triangles: ([0-9]+)\n")));
+  const std::string triangles = m[1];
+  const auto check = run_command(lsolid() + " check bush.3mf", dir_);
+  EXPECT_EQ(check.exit_code, 0) << check.out;
+  EXPECT_NE(check.out.find("bush.3mf: " + triangles + " triangles"),
+            std::string::npos)
+      << check.out;
+  const auto prusa = run_command("prusa-slicer --info bush.3mf", dir_);
+  ASSERT_EQ(prusa.exit_code, 0) << prusa.err;
+  EXPECT_NE(prusa.out.find("number_of_facets = " + triangles + "\n"),
+            std::string::npos)
+      << prusa.out;
+  EXPECT_NE(prusa.out.find("manifold = yes\n"), std::string::npos);
+  EXPECT_NE(prusa.out.find("size_x = 99.99"), std::string::npos) << prusa.out;
+}
+
+TEST_F(Build, WritesOneVolumePerColourForAMultiMaterialPrinter) {
+  { std::ofstream(dir_ / "three.ls") << kThreeColours; }
+  const auto r = run_command(
+      lsolid() + " three.ls --multi-material -o three.3mf", dir_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("volumes: 3 for 3 extruders, not overlapping: colour "
+                       "0 "),
+            std::string::npos)
+      << r.out;
+  // lsolid check reads the volumes back apart and finds no overlap.
+  const auto check = run_command(lsolid() + " check three.3mf", dir_);
+  EXPECT_EQ(check.exit_code, 0) << check.out;
+  EXPECT_NE(check.out.find("three.3mf: 3 volumes\n"), std::string::npos)
+      << check.out;
+  EXPECT_NE(check.out.find("volume 3 (colour 2): "), std::string::npos);
+  EXPECT_NE(check.out.find("overlap: none, the volumes only touch"),
+            std::string::npos)
+      << check.out;
+  // PrusaSlicer loads one object of three parts, an extruder each: saved
+  // again, its own metadata lists them.
+  const auto saved = run_command(
+      "prusa-slicer --export-3mf -o saved.3mf three.3mf && unzip -p saved.3mf "
+      "Metadata/Slic3r_PE_model.config",
+      dir_);
+  ASSERT_EQ(saved.exit_code, 0) << saved.err;
+  const auto count = [&](const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = saved.out.find(what); at != std::string::npos;
+         at = saved.out.find(what, at + 1)) {
+      ++n;
+    }
+    return n;
+  };
+  EXPECT_EQ(count("<object "), 1U) << saved.out;
+  EXPECT_EQ(count("<volume "), 3U) << saved.out;
+  for (const char* extruder : {"1", "2", "3"}) {
+    EXPECT_EQ(count(std::string("key=\"extruder\" value=\"") + extruder +
+                    "\""),
+              1U)
+        << extruder;
+  }
+  const auto obj = run_command(
+      lsolid() + " three.ls --multi-material -o three.obj -q", dir_);
+  EXPECT_EQ(obj.exit_code, 0) << obj.err;
+  EXPECT_TRUE(std::filesystem::exists(dir_ / "three.mtl"));
+  EXPECT_EQ(run_command(lsolid() + " check three.obj", dir_).exit_code, 0);
+  const auto stl =
+      run_command(lsolid() + " three.ls --multi-material -o three.stl", dir_);
+  EXPECT_EQ(stl.exit_code, 2);
+  EXPECT_EQ(stl.err,
+            "--multi-material: error: volumes per colour need a .3mf or .obj "
+            "output, not 'three.stl'\n");
+}
+
+TEST_F(Build, CheckFindsVolumesThatOverlap) {
+  // Two unit cubes as two OBJ objects, the second shifted half a cube.
+  std::ofstream obj(dir_ / "overlap.obj");
+  for (const double dx : {0.0, 0.5}) {
+    obj << "o cube\n";
+    for (int i = 0; i < 8; ++i) {
+      obj << "v " << dx + (i & 1) << " " << ((i >> 1) & 1) << " "
+          << ((i >> 2) & 1) << "\n";
+    }
+    const int b = dx == 0.0 ? 0 : 8;
+    for (const auto& f : {std::array{1, 3, 2}, std::array{2, 3, 4},
+                          std::array{5, 6, 8}, std::array{5, 8, 7},
+                          std::array{1, 2, 6}, std::array{1, 6, 5},
+                          std::array{3, 7, 8}, std::array{3, 8, 4},
+                          std::array{1, 5, 7}, std::array{1, 7, 3},
+                          std::array{2, 4, 8}, std::array{2, 8, 6}}) {
+      obj << "f " << b + f[0] << " " << b + f[1] << " " << b + f[2] << "\n";
+    }
+  }
+  obj.close();
+  const auto check = run_command(lsolid() + " check overlap.obj", dir_);
+  EXPECT_EQ(check.exit_code, 1) << check.out;
+  EXPECT_NE(check.out.find("volume 1 (colour 0): 12 triangles, 1.000 mm³, "
+                           "printable\n"),
+            std::string::npos)
+      << check.out;
+  EXPECT_NE(check.out.find("overlap: the volumes overlap"), std::string::npos)
+      << check.out;
+  EXPECT_NE(check.out.find("verdict: NOT printable\n"), std::string::npos);
+}
+
 TEST_F(Build, RefusesUnknownFormatsAndEmptyModels) {
   use_printable("branches-90", "b.ls");
-  const auto r = run_command(lsolid() + " b.ls -o b.obj", dir_);
+  const auto r = run_command(lsolid() + " b.ls -o b.ply", dir_);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err,
-            "--output: error: unknown output format '.obj': use .stl, .off or "
-            ".scad\n");
+            "--output: error: unknown output format '.ply': use .stl, .off, "
+            ".scad, .3mf or .obj\n");
   { std::ofstream(dir_ / "empty.ls") << "\u03C9: A+B\n"; }
   const auto empty = run_command(lsolid() + " empty.ls", dir_);
   EXPECT_EQ(empty.exit_code, 3);

@@ -48,7 +48,9 @@ TEST_F(MeshIo, ChoosesTheFormatByExtension) {
   EXPECT_EQ(format_for("x.STL"), MeshFormat::StlBinary);
   EXPECT_EQ(format_for("x.stl", true), MeshFormat::StlAscii);
   EXPECT_EQ(format_for("x.off"), MeshFormat::Off);
-  EXPECT_THROW((void)format_for("x.obj"), IoError);
+  EXPECT_EQ(format_for("x.3MF"), MeshFormat::ThreeMf);
+  EXPECT_EQ(format_for("x.obj"), MeshFormat::Obj);
+  EXPECT_THROW((void)format_for("x.ply"), IoError);
 }
 
 TEST_F(MeshIo, WritesAnOpenScadModuleWithClockwiseFaces) {
@@ -103,6 +105,80 @@ TEST_F(MeshIo, RejectsTruncatedAndForeignFiles) {
   { std::ofstream(dir_ / "x.stl") << "hello"; }
   EXPECT_THROW((void)read_mesh(dir_ / "x.stl"), IoError);
   EXPECT_THROW((void)read_mesh(dir_ / "absent.stl"), IoError);
+}
+
+std::string read_all(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST_F(MeshIo, Writes3mfInMillimetresWithAColourPerTriangle) {
+  ColoredMesh box{.mesh = box_mesh({0, 0, 0}, {1, 2, 3.5}), .colors = {}};
+  for (std::size_t t = 0; t < 12; ++t) box.colors.push_back(t < 6 ? 0 : 3);
+  write_colored({box}, dir_ / "box.3mf", MeshFormat::ThreeMf);
+  const std::vector<ColoredMesh> back = read_colored(dir_ / "box.3mf");
+  ASSERT_EQ(back.size(), 1U);
+  EXPECT_EQ(back[0].mesh.vertices.size(), 8U);
+  ASSERT_EQ(back[0].mesh.triangles.size(), 12U);
+  EXPECT_EQ(back[0].colors, box.colors);
+  EXPECT_EQ(back[0].mesh.triangles, box.mesh.triangles);
+  EXPECT_DOUBLE_EQ(signed_volume(back[0].mesh), 7.0);
+  EXPECT_DOUBLE_EQ(bounds(back[0].mesh).max.z, 3.5);  // millimetres
+  EXPECT_DOUBLE_EQ(signed_volume(read_mesh(dir_ / "box.3mf")), 7.0);
+  // The package is a ZIP.
+  const std::string bytes = read_all(dir_ / "box.3mf");
+  EXPECT_EQ(bytes.substr(0, 2), "PK");
+}
+
+TEST_F(MeshIo, Writes3mfVolumesThatReadBackApart) {
+  const ColoredMesh stem{.mesh = box_mesh({0, 0, 0}, {1, 1, 4}),
+                         .colors = std::vector<int>(12, 0)};
+  const ColoredMesh leaf{.mesh = box_mesh({1, 0, 3}, {3, 1, 3.5}),
+                         .colors = std::vector<int>(12, 4)};
+  write_colored({stem, leaf}, dir_ / "two.3mf", MeshFormat::ThreeMf);
+  const std::vector<ColoredMesh> back = read_colored(dir_ / "two.3mf");
+  ASSERT_EQ(back.size(), 2U);
+  EXPECT_EQ(back[0].colors, stem.colors);
+  EXPECT_EQ(back[1].colors, leaf.colors);
+  EXPECT_DOUBLE_EQ(signed_volume(back[0].mesh), 4.0);
+  EXPECT_DOUBLE_EQ(signed_volume(back[1].mesh), 1.0);
+  EXPECT_EQ(back[1].mesh.vertices.size(), 8U);
+}
+
+TEST_F(MeshIo, WritesObjWithAMaterialFileOfTheColours) {
+  const ColoredMesh stem{.mesh = box_mesh({0, 0, 0}, {1, 1, 4}),
+                         .colors = std::vector<int>(12, 0)};
+  // 3.1 is no float: OBJ keeps doubles, as OFF does.
+  const ColoredMesh leaf{.mesh = box_mesh({1, 0, 3}, {3, 1, 3.1}),
+                         .colors = std::vector<int>(12, 3)};
+  write_colored({stem, leaf}, dir_ / "two.obj", MeshFormat::Obj);
+  const std::string obj = read_all(dir_ / "two.obj");
+  EXPECT_NE(obj.find("mtllib two.mtl\n"), std::string::npos);
+  EXPECT_NE(obj.find("usemtl colour_3\n"), std::string::npos);
+  const std::string mtl = read_all(dir_ / "two.mtl");
+  // #8CC63F, colour 3's leaf green, as fractions of 255.
+  EXPECT_NE(mtl.find("newmtl colour_3\nKa 0 0 0\nKd 0.54902 0.776471 "
+                     "0.247059\n"),
+            std::string::npos)
+      << mtl;
+  const std::vector<ColoredMesh> back = read_colored(dir_ / "two.obj");
+  ASSERT_EQ(back.size(), 2U);
+  EXPECT_EQ(back[1].colors, leaf.colors);
+  EXPECT_EQ(bounds(back[1].mesh).max.z, 3.1);
+  EXPECT_NEAR(signed_volume(read_mesh(dir_ / "two.obj")), 4.2, 1e-12);
+}
+
+TEST_F(MeshIo, RefusesABrokenObjWithItsLine) {
+  { std::ofstream(dir_ / "bad.obj") << "v 0 0 0\nv 1 0 0\nf 1 2 3\n"; }
+  try {
+    (void)read_mesh(dir_ / "bad.obj");
+    FAIL() << "no error";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find(
+                  "line 3: a face names a missing vertex"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

@@ -126,10 +126,11 @@ int check_volumes(const CheckCommand& command,
       items += fmt::format("{}{}, \"color\": {}}}", i > 0 ? ", " : "", one,
                            color(i));
     }
-    fmt::print("{{\"printable\": {}, \"volumes\": [{}], \"overlap_mm\": "
-               "{}}}\n",
-               printable, items,
-               overlap_mm ? json_number(*overlap_mm) : std::string("null"));
+    fmt::print(
+        "{{\"printable\": {}, \"volumes\": [{}], \"overlap_mm\": "
+        "{}}}\n",
+        printable, items,
+        overlap_mm ? json_number(*overlap_mm) : std::string("null"));
   } else {
     fmt::print("{}: {} volumes\n", command.file, volumes.size());
     for (std::size_t i = 0; i < reports.size(); ++i) {
@@ -140,11 +141,12 @@ int check_volumes(const CheckCommand& command,
       for (const std::string& p : r.problems()) fmt::print("  {}\n", p);
     }
     if (overlap_mm) {
-      fmt::print("overlap: {} (the deepest sampled point of one inside "
-                 "another, {:.6f} mm)\n",
-                 *overlap_mm <= kTouchMm ? "none, the volumes only touch"
-                                         : "the volumes overlap",
-                 *overlap_mm);
+      fmt::print(
+          "overlap: {} (the deepest sampled point of one inside "
+          "another, {:.6f} mm)\n",
+          *overlap_mm <= kTouchMm ? "none, the volumes only touch"
+                                  : "the volumes overlap",
+          *overlap_mm);
     } else {
       fmt::print("overlap: not measured (a volume is not printable)\n");
     }

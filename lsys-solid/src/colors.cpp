@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: MIT
 #include "lsolid/colors.hpp"
 
-#include <array>
 #include <fmt/format.h>
+
+#include <array>
 #include <map>
 
 #include "surface_distance.hpp"
@@ -43,7 +44,8 @@ std::vector<int> color_triangles(const TriangleMesh& mesh,
   std::map<int, TriangleMesh> surfaces;
   for (const Part& part : parts) append(surfaces[part.color], part.mesh);
   if (surfaces.size() <= 1) {
-    if (!surfaces.empty()) colors.assign(colors.size(), surfaces.begin()->first);
+    if (!surfaces.empty())
+      colors.assign(colors.size(), surfaces.begin()->first);
     return colors;
   }
   std::vector<std::pair<int, SurfaceDistance>> index;
@@ -56,10 +58,9 @@ std::vector<int> color_triangles(const TriangleMesh& mesh,
   constexpr double kLimitMm = 10.0;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& tri = mesh.triangles[t];
-    const glm::dvec3 centre =
-        (mesh.vertices[tri[0]] + mesh.vertices[tri[1]] +
-         mesh.vertices[tri[2]]) /
-        3.0;
+    const glm::dvec3 centre = (mesh.vertices[tri[0]] + mesh.vertices[tri[1]] +
+                               mesh.vertices[tri[2]]) /
+                              3.0;
     double best = kLimitMm * 2.0;
     for (auto& [color, surface] : index) {
       const double d = surface.distance(centre, kLimitMm);

@@ -7,13 +7,12 @@
 #include "mesh_3mf.hpp"
 
 #include <Model/COM/NMR_DLLInterfaces.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <charconv>
 #include <map>
 #include <utility>
-
-#include <fmt/format.h>
 
 #include "lsolid/errors.hpp"
 
@@ -105,8 +104,8 @@ PLib3MFModelMeshObject* add_mesh(PLib3MFModel* model, const ColoredMesh& volume,
   // wants a pid on the object when its triangles have one.
   Handle defaults;
   check(lib3mf_object_createdefaultpropertyhandler(
-            object, reinterpret_cast<PLib3MFDefaultPropertyHandler**>(
-                        defaults.out())),
+            object,
+            reinterpret_cast<PLib3MFDefaultPropertyHandler**>(defaults.out())),
         object, "setting the default material");
   check(lib3mf_defaultpropertyhandler_setbasematerial(
             defaults.get(), group_id,
@@ -130,7 +129,6 @@ PLib3MFModelMeshObject* add_mesh(PLib3MFModel* model, const ColoredMesh& volume,
   *owner.out() = nullptr;
   return object;
 }
-
 
 // The triangle ranges (first, last) of the volumes PrusaSlicer's metadata
 // lists, in the order given; empty without that metadata. Only one object
@@ -283,8 +281,7 @@ std::string encode_3mf(const std::vector<ColoredMesh>& volumes) {
                object_id) +
            config + " </object>\n</config>\n";
   Handle item;
-  check(lib3mf_model_addbuilditem(model.get(), mesh.get(), nullptr,
-                                  item.out()),
+  check(lib3mf_model_addbuilditem(model.get(), mesh.get(), nullptr, item.out()),
         model.get(), "adding the build item");
   if (volumes.size() > 1) {
     Handle attachment;
@@ -298,8 +295,8 @@ std::string encode_3mf(const std::vector<ColoredMesh>& volumes) {
           attachment.get(), "adding PrusaSlicer's volume list");
   }
   Handle writer;
-  check(lib3mf_model_querywriter(model.get(), "3mf", writer.out()),
-        model.get(), "creating the writer");
+  check(lib3mf_model_querywriter(model.get(), "3mf", writer.out()), model.get(),
+        "creating the writer");
   ULONG64 size = 0;
   check(lib3mf_writer_getstreamsize(writer.get(), &size), writer.get(),
         "measuring the package");
@@ -314,8 +311,8 @@ std::vector<ColoredMesh> decode_3mf(const std::filesystem::path& path) {
   Handle model;
   check(lib3mf_createmodel(model.out()), nullptr, "creating a model");
   Handle reader;
-  check(lib3mf_model_queryreader(model.get(), "3mf", reader.out()),
-        model.get(), "creating the reader");
+  check(lib3mf_model_queryreader(model.get(), "3mf", reader.out()), model.get(),
+        "creating the reader");
   check(lib3mf_reader_addrelationtoreadutf8(reader.get(),
                                             kPrusaConfigRelationship),
         reader.get(), "creating the reader");
@@ -326,12 +323,23 @@ std::vector<ColoredMesh> decode_3mf(const std::filesystem::path& path) {
         "reading the unit");
   double scale = 1.0;
   switch (unit) {
-    case MODELUNIT_MICROMETER: scale = 0.001; break;
-    case MODELUNIT_CENTIMETER: scale = 10.0; break;
-    case MODELUNIT_INCH: scale = 25.4; break;
-    case MODELUNIT_FOOT: scale = 304.8; break;
-    case MODELUNIT_METER: scale = 1000.0; break;
-    default: break;
+    case MODELUNIT_MICROMETER:
+      scale = 0.001;
+      break;
+    case MODELUNIT_CENTIMETER:
+      scale = 10.0;
+      break;
+    case MODELUNIT_INCH:
+      scale = 25.4;
+      break;
+    case MODELUNIT_FOOT:
+      scale = 304.8;
+      break;
+    case MODELUNIT_METER:
+      scale = 1000.0;
+      break;
+    default:
+      break;
   }
   const std::vector<std::pair<std::size_t, std::size_t>> ranges =
       volume_ranges(model.get());
@@ -345,8 +353,8 @@ std::vector<ColoredMesh> decode_3mf(const std::filesystem::path& path) {
     if (const auto it = colors.find(key); it != colors.end()) return it->second;
     int color = 0;
     Handle group;
-    if (lib3mf_model_getbasematerialbyid(model.get(), group_id,
-                                         group.out()) == LIB3MF_OK) {
+    if (lib3mf_model_getbasematerialbyid(model.get(), group_id, group.out()) ==
+        LIB3MF_OK) {
       ULONG needed = 0;
       lib3mf_basematerial_getnameutf8(group.get(), index, nullptr, 0, &needed);
       std::string name(needed + 1, '\0');
@@ -361,8 +369,8 @@ std::vector<ColoredMesh> decode_3mf(const std::filesystem::path& path) {
   };
   for (;;) {
     BOOL more = 0;
-    check(lib3mf_resourceiterator_movenext(objects.get(), &more),
-          objects.get(), "listing the meshes");
+    check(lib3mf_resourceiterator_movenext(objects.get(), &more), objects.get(),
+          "listing the meshes");
     if (more == 0) break;
     Handle object;
     check(lib3mf_resourceiterator_getcurrent(objects.get(), object.out()),
@@ -381,8 +389,8 @@ std::vector<ColoredMesh> decode_3mf(const std::filesystem::path& path) {
             object.get(), "reading a mesh");
     }
     if (triangle_count > 0) {
-      check(lib3mf_meshobject_gettriangleindices(
-                object.get(), triangles.data(), triangle_count, nullptr),
+      check(lib3mf_meshobject_gettriangleindices(object.get(), triangles.data(),
+                                                 triangle_count, nullptr),
             object.get(), "reading a mesh");
     }
     ColoredMesh mesh;
@@ -408,9 +416,8 @@ std::vector<ColoredMesh> decode_3mf(const std::filesystem::path& path) {
         DWORD group_id = 0;
         DWORD index = 0;
         const bool has =
-            lib3mf_propertyhandler_getbasematerial(properties.get(), t,
-                                                   &group_id,
-                                                   &index) == LIB3MF_OK &&
+            lib3mf_propertyhandler_getbasematerial(
+                properties.get(), t, &group_id, &index) == LIB3MF_OK &&
             group_id != 0;
         mesh.colors.push_back(has ? color_of(group_id, index) : 0);
       }

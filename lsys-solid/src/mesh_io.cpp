@@ -19,8 +19,8 @@
 #include <unordered_map>
 
 #include "atomic_write.hpp"
-#include "mesh_3mf.hpp"
 #include "lsolid/errors.hpp"
+#include "mesh_3mf.hpp"
 #include "vertex_key.hpp"
 
 namespace lsolid {
@@ -276,7 +276,6 @@ std::string encode(const TriangleMesh& mesh, MeshFormat format,
   return out;
 }
 
-
 // Wavefront OBJ: `v x y z` and `f a b c ...` (1-based, negative from the
 // end, `a/t/n` forms), faces fanned; `o` starts a volume and `usemtl
 // colour_N` sets the colour of the faces that follow.
@@ -388,8 +387,7 @@ std::string encode_obj(const std::vector<ColoredMesh>& volumes,
     out += volumes.size() == 1 ? std::string("o model\n")
                                : "o volume_" + std::to_string(i + 1) + "\n";
     for (const glm::dvec3& p : v.mesh.vertices) {
-      std::snprintf(line, sizeof(line), "v %.17g %.17g %.17g\n", p.x, p.y,
-                    p.z);
+      std::snprintf(line, sizeof(line), "v %.17g %.17g %.17g\n", p.x, p.y, p.z);
       out += line;
     }
     int current = -1;
@@ -462,7 +460,8 @@ std::vector<ColoredMesh> read_colored(const std::filesystem::path& path) {
   }
   TriangleMesh mesh = read_mesh(path);
   const std::size_t n = mesh.triangles.size();
-  return {ColoredMesh{.mesh = std::move(mesh), .colors = std::vector<int>(n, 0)}};
+  return {
+      ColoredMesh{.mesh = std::move(mesh), .colors = std::vector<int>(n, 0)}};
 }
 
 void write_mesh(const TriangleMesh& mesh, const std::filesystem::path& path,

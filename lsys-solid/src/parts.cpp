@@ -1014,9 +1014,9 @@ class PartBuilder {
       mesh.triangles.push_back({i, j, j + count});
       mesh.triangles.push_back({i, j + count, i + count});
     }
-    set_.parts.push_back(
-        Part{std::move(mesh), fmt::format("leaf plate of polygon {}", index),
-             polygon.color});
+    set_.parts.push_back(Part{std::move(mesh),
+                              fmt::format("leaf plate of polygon {}", index),
+                              polygon.color});
     ++set_.plates;
     // A plate that starts on its stem's axis, where the stem goes on, cuts
     // through the tube and fuses with it in the union. At a tip the plate
@@ -1029,8 +1029,7 @@ class PartBuilder {
       const bool goes_on = continuation_[i] >= 0 || end_junction_[i] >= 0;
       if (from_end <= stem_radius &&
           !(goes_on && from_end <= kOnAxis * stem_radius)) {
-        add_joint(stem.p1, std::max(stem_radius, 0.75 * thickness),
-                  stem.color);
+        add_joint(stem.p1, std::max(stem_radius, 0.75 * thickness), stem.color);
       }
     }
   }

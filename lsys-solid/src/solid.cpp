@@ -2,14 +2,14 @@
 // SPDX-License-Identifier: MIT
 #include "lsolid/solid.hpp"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
 #include <map>
-
-#include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include "lsolid/boolean.hpp"
 #include "lsolid/colors.hpp"
@@ -127,8 +127,8 @@ void cut_underside(std::vector<Part>& parts, Placement& placement) {
 // The union of the parts, rounded to the file's precision, decimated where
 // that stays printable, and its check, into `mesh` and `report`.
 void unite_and_finish(std::vector<Part> parts, const SolidOptions& options,
-                      SolidReport& report, TriangleMesh& mesh,
-                      Stopwatch& clock, const Progress& tell) {
+                      SolidReport& report, TriangleMesh& mesh, Stopwatch& clock,
+                      const Progress& tell) {
   tell("union", 0.0);
   if (options.unite) {
     UnionResult united = union_parts(std::move(parts),
@@ -192,16 +192,16 @@ void unite_and_finish(std::vector<Part> parts, const SolidOptions& options,
 // left of are dropped.
 // @throws GeometryError if a volume is not printable.
 std::vector<ColoredMesh> colour_volumes(std::vector<Part> parts,
-                                          const Solid& whole,
-                                          const SolidOptions& options,
-                                          const Progress& tell) {
+                                        const Solid& whole,
+                                        const SolidOptions& options,
+                                        const Progress& tell) {
   std::map<int, std::vector<Part>> by_color;
   for (Part& part : parts) by_color[part.color].push_back(std::move(part));
   if (by_color.size() <= 1) {
     const int color = by_color.empty() ? 0 : by_color.begin()->first;
-    return {ColoredMesh{.mesh = whole.mesh,
-                        .colors = std::vector<int>(whole.mesh.triangles.size(),
-                                                   color)}};
+    return {ColoredMesh{
+        .mesh = whole.mesh,
+        .colors = std::vector<int>(whole.mesh.triangles.size(), color)}};
   }
   std::vector<ColoredMesh> volumes;
   TriangleMesh filled;  // the union of the volumes so far
@@ -213,9 +213,9 @@ std::vector<ColoredMesh> colour_volumes(std::vector<Part> parts,
     unite_and_finish(std::move(group), options, scratch, own, clock,
                      [](std::string_view, double) {});
     if (!scratch.validation.is_printable()) {
-      throw GeometryError(fmt::format(
-          "the volume of colour {} is not printable: {}", color,
-          fmt::join(scratch.validation.problems(), "; ")));
+      throw GeometryError(
+          fmt::format("the volume of colour {} is not printable: {}", color,
+                      fmt::join(scratch.validation.problems(), "; ")));
     }
     RoundingStats rounding;
     TriangleMesh volume =
@@ -278,11 +278,11 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   PartSet parts;
   for (int pass = 0; pass < kSizePasses; ++pass) {
     scaled = scale_to_print(skeleton, print);
-    parts = build_parts(
-        scaled.skeleton,
-        {.wall_mm = print.wall_mm,
-         .tolerance_mm = print.tolerance_mm,
-         .split_colors = options.colors || options.multi_material});
+    parts =
+        build_parts(scaled.skeleton,
+                    {.wall_mm = print.wall_mm,
+                     .tolerance_mm = print.tolerance_mm,
+                     .split_colors = options.colors || options.multi_material});
     if (options.print.scale_mm_per_unit || parts.parts.empty()) break;
     const glm::dvec3 extent = bounds(parts.parts).size();
     const double actual = options.print.height_mm

@@ -79,7 +79,8 @@ class SurfaceDistance {
         // half a cell's diagonal of it.
         const double reach = 0.8660254037844387 * cell_mm_;
         for_cells(lo, hi, [&](std::uint64_t key, const glm::dvec3& centre) {
-          const glm::dvec3 d = closest_point_on_triangle(centre, a, b, c) - centre;
+          const glm::dvec3 d =
+              closest_point_on_triangle(centre, a, b, c) - centre;
           if (glm::dot(d, d) <= reach * reach) cells_[key].push_back(i);
         });
       } else {
@@ -105,11 +106,10 @@ class SurfaceDistance {
           if (seen_[i] == stamp_) continue;
           seen_[i] = stamp_;
           const auto& t = mesh_.triangles[i];
-          const glm::dvec3 d =
-              closest_point_on_triangle(p, mesh_.vertices[t[0]],
-                                        mesh_.vertices[t[1]],
-                                        mesh_.vertices[t[2]]) -
-              p;
+          const glm::dvec3 d = closest_point_on_triangle(
+                                   p, mesh_.vertices[t[0]],
+                                   mesh_.vertices[t[1]], mesh_.vertices[t[2]]) -
+                               p;
           best = std::min(best, glm::dot(d, d));
         }
       };

@@ -345,8 +345,8 @@ TEST_F(Build, Writes3mfWithColoursThatPrusaSlicerOpens) {
 
 TEST_F(Build, WritesOneVolumePerColourForAMultiMaterialPrinter) {
   { std::ofstream(dir_ / "three.ls") << kThreeColours; }
-  const auto r = run_command(
-      lsolid() + " three.ls --multi-material -o three.3mf", dir_);
+  const auto r =
+      run_command(lsolid() + " three.ls --multi-material -o three.3mf", dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("volumes: 3 for 3 extruders, not overlapping: colour "
                        "0 "),
@@ -379,8 +379,7 @@ TEST_F(Build, WritesOneVolumePerColourForAMultiMaterialPrinter) {
   EXPECT_EQ(count("<object "), 1U) << saved.out;
   EXPECT_EQ(count("<volume "), 3U) << saved.out;
   for (const char* extruder : {"1", "2", "3"}) {
-    EXPECT_EQ(count(std::string("key=\"extruder\" value=\"") + extruder +
-                    "\""),
+    EXPECT_EQ(count(std::string("key=\"extruder\" value=\"") + extruder + "\""),
               1U)
         << extruder;
   }
@@ -407,12 +406,11 @@ TEST_F(Build, CheckFindsVolumesThatOverlap) {
           << ((i >> 2) & 1) << "\n";
     }
     const int b = dx == 0.0 ? 0 : 8;
-    for (const auto& f : {std::array{1, 3, 2}, std::array{2, 3, 4},
-                          std::array{5, 6, 8}, std::array{5, 8, 7},
-                          std::array{1, 2, 6}, std::array{1, 6, 5},
-                          std::array{3, 7, 8}, std::array{3, 8, 4},
-                          std::array{1, 5, 7}, std::array{1, 7, 3},
-                          std::array{2, 4, 8}, std::array{2, 8, 6}}) {
+    for (const auto& f :
+         {std::array{1, 3, 2}, std::array{2, 3, 4}, std::array{5, 6, 8},
+          std::array{5, 8, 7}, std::array{1, 2, 6}, std::array{1, 6, 5},
+          std::array{3, 7, 8}, std::array{3, 8, 4}, std::array{1, 5, 7},
+          std::array{1, 7, 3}, std::array{2, 4, 8}, std::array{2, 8, 6}}) {
       obj << "f " << b + f[0] << " " << b + f[1] << " " << b + f[2] << "\n";
     }
   }

@@ -174,9 +174,9 @@ TEST_F(MeshIo, RefusesABrokenObjWithItsLine) {
     (void)read_mesh(dir_ / "bad.obj");
     FAIL() << "no error";
   } catch (const IoError& e) {
-    EXPECT_NE(std::string(e.what()).find(
-                  "line 3: a face names a missing vertex"),
-              std::string::npos)
+    EXPECT_NE(
+        std::string(e.what()).find("line 3: a face names a missing vertex"),
+        std::string::npos)
         << e.what();
   }
 }

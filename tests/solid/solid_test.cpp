@@ -6,8 +6,8 @@
 
 #include <cmath>
 #include <filesystem>
-#include <map>
 #include <glm/geometric.hpp>
+#include <map>
 #include <numbers>
 
 #include "lsolid/distance.hpp"

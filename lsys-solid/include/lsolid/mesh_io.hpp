@@ -3,7 +3,6 @@
 #pragma once
 
 #include <filesystem>
-
 #include <vector>
 
 #include "lsolid/colors.hpp"
@@ -16,7 +15,7 @@ enum class MeshFormat {
   StlBinary,
   StlAscii,
   Off,
-  Scad,    ///< an OpenSCAD module around one polyhedron(); written only
+  Scad,     ///< an OpenSCAD module around one polyhedron(); written only
   ThreeMf,  ///< 3MF, unit millimetre, colours as base materials (lib3mf)
   Obj,      ///< Wavefront OBJ with an MTL file of the colours beside it
 };

@@ -32,6 +32,27 @@ Mesh to_surface_mesh(const TriangleMesh& m) {
   return out;
 }
 
+/// A mesh as CGAL's polygon soup: points and index triples.
+template <typename Point>
+struct PolygonSoup {
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+};
+
+/// The triangles as a polygon soup, for PMP's soup functions
+/// (is_polygon_soup_a_polygon_mesh, polygon_soup_to_polygon_mesh), which
+/// take fans completed out of order that add_face refuses.
+template <typename Point>
+PolygonSoup<Point> polygon_soup(const TriangleMesh& m) {
+  PolygonSoup<Point> soup;
+  soup.points.reserve(m.vertices.size());
+  for (const glm::dvec3& p : m.vertices)
+    soup.points.emplace_back(p.x, p.y, p.z);
+  soup.polygons.reserve(m.triangles.size());
+  for (const auto& t : m.triangles) soup.polygons.push_back({t[0], t[1], t[2]});
+  return soup;
+}
+
 /// The triangles of a Surface_mesh, with coordinates rounded to doubles.
 template <typename Mesh>
 TriangleMesh to_triangle_mesh(const Mesh& mesh) {

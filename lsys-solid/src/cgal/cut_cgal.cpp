@@ -21,10 +21,9 @@
 
 #include <array>
 #include <cmath>
+#include <glm/glm.hpp>
 #include <numbers>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "conversion.hpp"
 #include "lsolid/cut.hpp"
@@ -61,8 +60,8 @@ Mesh cutter_above(const TriangleMesh& mesh, double z_mm) {
     base[i] = cutter.add_vertex(Kernel::Point_3(
         centre.x + r * std::cos(a), centre.y + r * std::sin(a), z_mm));
   }
-  const Mesh::Vertex_index apex =
-      cutter.add_vertex(Kernel::Point_3(centre.x, centre.y, z_mm + 10.0 * reach));
+  const Mesh::Vertex_index apex = cutter.add_vertex(
+      Kernel::Point_3(centre.x, centre.y, z_mm + 10.0 * reach));
   // Outward: the base faces down, seen from below clockwise.
   cutter.add_face(base[0], base[2], base[1]);
   cutter.add_face(base[0], base[1], apex);
@@ -74,21 +73,16 @@ Mesh cutter_above(const TriangleMesh& mesh, double z_mm) {
 }  // namespace
 
 TriangleMesh cut_below(const TriangleMesh& input, double z_mm) {
-  std::vector<Kernel::Point_3> points;
-  points.reserve(input.vertices.size());
-  for (const glm::dvec3& p : input.vertices) points.emplace_back(p.x, p.y, p.z);
-  std::vector<std::vector<std::size_t>> polygons;
-  polygons.reserve(input.triangles.size());
-  for (const auto& t : input.triangles) polygons.push_back({t[0], t[1], t[2]});
-  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
+  const auto soup = polygon_soup<Kernel::Point_3>(input);
+  if (!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons)) {
     throw GeometryError("cannot cut a mesh that is not a 2-manifold");
   }
   Mesh mesh;
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, mesh);
   Mesh cutter = cutter_above(input, z_mm);
   try {
-    const bool closed = PMP::clip(mesh, cutter,
-                                  CGAL::parameters::clip_volume(true));
+    const bool closed =
+        PMP::clip(mesh, cutter, CGAL::parameters::clip_volume(true));
     if (!closed) throw GeometryError("CGAL could not close the cut");
     PMP::triangulate_faces(mesh);
   } catch (const std::exception& e) {

@@ -7,21 +7,21 @@
 // faces coincide (14 s on a 3k-triangle figure with a flat underside), so
 // the build measures by sampling (decimate_openmesh.cpp). Sequential_tag:
 // the parallel version needs METIS.
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <cmath>
-
 #include <vector>
 
+#include "conversion.hpp"
 #include "lsolid/distance.hpp"
 #include "lsolid/errors.hpp"
 
@@ -35,12 +35,7 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 // Through a polygon soup, as validate() does: adding the faces one by one
 // fails on some valid meshes whose fans are completed out of order.
 Mesh stitched(const TriangleMesh& mesh) {
-  std::vector<Kernel::Point_3> points;
-  points.reserve(mesh.vertices.size());
-  for (const glm::dvec3& p : mesh.vertices) points.emplace_back(p.x, p.y, p.z);
-  std::vector<std::vector<std::size_t>> polygons;
-  polygons.reserve(mesh.triangles.size());
-  for (const auto& t : mesh.triangles) polygons.push_back({t[0], t[1], t[2]});
+  auto [points, polygons] = polygon_soup<Kernel::Point_3>(mesh);
   if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
     PMP::orient_polygon_soup(points, polygons);
   }

@@ -24,6 +24,14 @@
 namespace lsolid::cli {
 namespace {
 
+// How many triangles of each colour are written.
+std::map<int, std::size_t> color_counts(const Solid& solid) {
+  std::map<int, std::size_t> triangles;
+  for (const int c : solid.colors) ++triangles[c];
+  if (triangles.empty()) triangles[0] = solid.mesh.triangles.size();
+  return triangles;
+}
+
 void print_report(const SolidReport& r, bool united) {
   const ValidationReport& v = r.validation;
   fmt::print("segments: {}, leaves: {}\n", r.segments, r.polygons);
@@ -109,25 +117,41 @@ void print_report(const SolidReport& r, bool united) {
 }
 
 // The report as one JSON object, for scripts (--json).
-std::string json_report(const SolidReport& r, const OverhangReport& over,
+std::string json_report(const Solid& solid, const OverhangReport& over,
                         const std::optional<glm::dvec3>& bed, bool fits,
                         const std::filesystem::path& output, bool written,
-                        bool united) {
+                        bool united, bool colored,
+                        const std::vector<Rgb>& palette) {
+  const SolidReport& r = solid.report;
   const ValidationReport& v = r.validation;
   const Placement& p = r.placement;
+  std::vector<std::string> colors;
+  for (const auto& [color, count] : color_counts(solid)) {
+    colors.push_back(
+        fmt::format("{{\"color\": {}, \"rgb\": \"{}\", \"triangles\": {}}}",
+                    color, hex(palette_color(color, palette)), count));
+  }
+  std::vector<std::string> volumes;
+  for (const ColoredMesh& m : solid.volumes) {
+    volumes.push_back(
+        fmt::format("{{\"color\": {}, \"triangles\": {}, \"volume_mm3\": {}}}",
+                    m.colors.empty() ? 0 : m.colors.front(),
+                    m.mesh.triangles.size(), signed_volume(m.mesh)));
+  }
   return fmt::format(
       "{{\"output\": {}, \"written\": {}, \"united\": {}, \"segments\": {}, "
       "\"leaves\": {}, \"tubes\": {}, \"junction_hulls\": {}, \"joints\": {}, "
       "\"leaf_plates\": {}, \"booleans\": {}, \"mm_per_unit\": {}, "
       "\"base\": {}, \"lies_flat\": {}, \"underside_cut_mm\": {}, "
-      "\"decimation\": {}, "
+      "\"decimation\": {}, \"colors\": {}, \"volumes\": {}, "
       "\"triangles\": {}, "
       "\"volume_mm3\": {}, "
       "\"bounds\": {{\"min\": {}, \"max\": {}}}, \"printable\": {}, "
       "\"shells\": {}, \"genus\": {}, \"overhang_mm2\": {}, "
       "\"needs_supports\": {}, \"fits_bed\": {}, "
       "\"seconds\": {{\"skeleton\": {}, \"parts\": {}, \"union\": {}, "
-      "\"rounding\": {}, \"decimation\": {}, \"check\": {}}}}}\n",
+      "\"rounding\": {}, \"decimation\": {}, \"check\": {}, "
+      "\"volumes\": {}}}}}\n",
       json_string(output.string()), written, united, r.segments, r.polygons,
       r.tubes, r.junctions, r.joints, r.plates, r.union_stats.booleans,
       r.mm_per_unit,
@@ -145,12 +169,16 @@ std::string json_report(const SolidReport& r, const OverhangReport& over,
                 r.decimation.max_deviation_mm,
                 r.decimation.reached_max_triangles)
           : std::string("null"),
+      colored ? fmt::format("[{}]", fmt::join(colors, ", "))
+              : std::string("null"),
+      volumes.empty() ? std::string("null")
+                      : fmt::format("[{}]", fmt::join(volumes, ", ")),
       v.triangles, v.volume_mm3, json_point(v.bounds.min),
       json_point(v.bounds.max), v.is_printable(), v.shells, v.genus,
       over.area_mm2, over.needs_supports,
       bed ? (fits ? "true" : "false") : "null", r.seconds.skeleton,
       r.seconds.parts, r.seconds.unite, r.seconds.round, r.seconds.decimate,
-      r.seconds.check);
+      r.seconds.check, r.seconds.volumes);
 }
 
 }  // namespace
@@ -158,14 +186,11 @@ std::string json_report(const SolidReport& r, const OverhangReport& over,
 namespace {
 
 // The colours written, and with --multi-material the volumes.
-void print_colors(const Solid& solid) {
-  std::map<int, std::size_t> triangles;
-  for (const int c : solid.colors) ++triangles[c];
-  if (triangles.empty()) triangles[0] = solid.mesh.triangles.size();
+void print_colors(const Solid& solid, const std::vector<Rgb>& palette) {
   std::vector<std::string> names;
-  for (const auto& [color, count] : triangles) {
+  for (const auto& [color, count] : color_counts(solid)) {
     names.push_back(fmt::format("{} {} ({} triangles)", color,
-                                hex(palette_color(color)), count));
+                                hex(palette_color(color, palette)), count));
   }
   fmt::print("colours: {}\n", fmt::join(names, ", "));
   if (solid.volumes.empty()) return;
@@ -268,7 +293,7 @@ int run_build(const BuildCommand& command) {
   if (bar) std::fprintf(stderr, "\r%50s\r", "");
   warn_about_polygons(solid.report.dropped);
   if (text) print_report(solid.report, options.unite);
-  if (text && colored) print_colors(solid);
+  if (text && colored) print_colors(solid, options.print.colors);
   const OverhangReport over = overhang(solid.mesh);
   if (text) {
     fmt::print("overhang: {:.1f} mm² faces down more steeply than 45°: {}\n",
@@ -292,8 +317,9 @@ int run_build(const BuildCommand& command) {
   }
   const auto finish = [&](bool written) {
     if (command.json) {
-      fmt::print("{}", json_report(solid.report, over, bed, fits, output,
-                                   written, options.unite));
+      fmt::print("{}",
+                 json_report(solid, over, bed, fits, output, written,
+                             options.unite, colored, options.print.colors));
     }
     std::fflush(stdout);
   };
@@ -313,10 +339,10 @@ int run_build(const BuildCommand& command) {
     return 3;
   }
   if (!solid.volumes.empty()) {
-    write_colored(solid.volumes, output, format);
+    write_colored(solid.volumes, output, format, options.print.colors);
   } else if (colored) {
     write_colored({ColoredMesh{.mesh = solid.mesh, .colors = solid.colors}},
-                  output, format);
+                  output, format, options.print.colors);
   } else {
     write_mesh(solid.mesh, output, format);
   }

@@ -59,9 +59,11 @@ struct PrintInput {
   std::optional<std::string> scale;
   std::optional<std::string> tolerance;
   std::optional<std::string> base;
+  std::optional<std::string> colors;
 };
 
-/// Registers --wall, --height, --size, --scale, --tolerance and --base.
+/// Registers --wall, --height, --size, --scale, --tolerance, --base and
+/// --colors.
 void add_print_options(CLI::App& command, PrintInput& input);
 
 /// The file's print settings overridden by the command line's.

@@ -75,6 +75,10 @@ void add_print_options(CLI::App& command, PrintInput& input) {
   command.add_option("--base", input.base,
                      "auto: a disc under a model that would stand on a small "
                      "footprint (default); disc; none");
+  command.add_option("--colors", input.colors,
+                     "the colour of each turtle colour index in .3mf and .obj, "
+                     "e.g. '#7B4A2A #7B4A2A #8CC63F' (later indices take the "
+                     "last; indices of one colour print as one material)");
 }
 
 PrintSettings print_settings(const lsys::Grammar& grammar,
@@ -91,10 +95,11 @@ PrintSettings print_settings(const lsys::Grammar& grammar,
     given.tolerance_mm = parse_length_mm(*input.tolerance, "--tolerance");
   }
   if (input.base) given.base = parse_base(*input.base, "--base");
+  if (input.colors) given.colors = parse_colors(*input.colors, "--colors");
   return resolve_print_settings(
       grammar, given, input.height || input.size || input.scale,
       input.wall.has_value(), input.tolerance.has_value(),
-      input.base.has_value());
+      input.base.has_value(), input.colors.has_value());
 }
 
 lsys::DerivationOptions derivation_options(const GrammarInput& input) {

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <map>
 
@@ -29,9 +30,21 @@ constexpr std::array<Rgb, 10> kPalette{{{0x7B, 0x4A, 0x2A},
 
 }  // namespace
 
-Rgb palette_color(int index) noexcept {
-  return kPalette[static_cast<std::size_t>(index < 0 ? 0 : index) %
-                  kPalette.size()];
+Rgb palette_color(int index, const std::vector<Rgb>& colors) {
+  const auto i = static_cast<std::size_t>(std::max(index, 0));
+  if (!colors.empty()) return colors[std::min(i, colors.size() - 1)];
+  return kPalette[i % kPalette.size()];
+}
+
+int material_index(int index, const std::vector<Rgb>& colors) {
+  // Every colour there is appears among the first `period` indices.
+  const int period =
+      static_cast<int>(colors.empty() ? kPalette.size() : colors.size());
+  const Rgb color = palette_color(index, colors);
+  for (int i = 0; i < period; ++i) {
+    if (palette_color(i, colors) == color) return i;
+  }
+  return 0;
 }
 
 std::string hex(Rgb color) {

@@ -214,7 +214,8 @@ std::vector<ColoredMesh> split(
 
 }  // namespace
 
-std::string encode_3mf(const std::vector<ColoredMesh>& volumes) {
+std::string encode_3mf(const std::vector<ColoredMesh>& volumes,
+                       const std::vector<Rgb>& colors) {
   Handle model;
   check(lib3mf_createmodel(model.out()), nullptr, "creating a model");
   check(lib3mf_model_setunit(model.get(), MODELUNIT_MILLIMETER), model.get(),
@@ -229,7 +230,7 @@ std::string encode_3mf(const std::vector<ColoredMesh>& volumes) {
   check(lib3mf_model_addbasematerialgroup(model.get(), group.out()),
         model.get(), "adding the materials");
   for (auto& [color, index] : material) {
-    const Rgb rgb = palette_color(color);
+    const Rgb rgb = palette_color(color, colors);
     check(lib3mf_basematerial_addmaterialutf8(group.get(),
                                               material_name(color).c_str(),
                                               rgb.r, rgb.g, rgb.b, &index),

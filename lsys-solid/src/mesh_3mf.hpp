@@ -13,9 +13,10 @@ namespace lsolid {
 /// A 3MF package (unit millimetre) of the volumes: one object of type model,
 /// a mesh if there is one volume, else a components object with a mesh per
 /// volume (PrusaSlicer reads those as the parts of one object). Triangles
-/// carry base materials named "colour N" in palette_color(N).
+/// carry base materials named "colour N" in palette_color(N, colors).
 /// @throws IoError if lib3mf fails.
-[[nodiscard]] std::string encode_3mf(const std::vector<ColoredMesh>& volumes);
+[[nodiscard]] std::string encode_3mf(const std::vector<ColoredMesh>& volumes,
+                                     const std::vector<Rgb>& colors = {});
 
 /// The mesh objects of a 3MF file in millimetres, with the colour index of
 /// each triangle read from base materials named "colour N" (0 otherwise).

@@ -355,7 +355,8 @@ std::string obj_material(int color) {
   return "colour_" + std::to_string(color);
 }
 
-std::string encode_mtl(const std::vector<ColoredMesh>& volumes) {
+std::string encode_mtl(const std::vector<ColoredMesh>& volumes,
+                       const std::vector<Rgb>& colors) {
   std::map<int, bool> used;
   for (const ColoredMesh& v : volumes) {
     if (v.colors.empty()) used[0] = true;
@@ -364,7 +365,7 @@ std::string encode_mtl(const std::vector<ColoredMesh>& volumes) {
   std::string out = "# lsolid: the turtle's colours (ABOP's ')\n";
   char line[160];
   for (const auto& [color, _] : used) {
-    const Rgb rgb = palette_color(color);
+    const Rgb rgb = palette_color(color, colors);
     std::snprintf(line, sizeof(line),
                   "\nnewmtl %s\nKa 0 0 0\nKd %.6g %.6g %.6g\nKs 0 0 0\nd 1\n"
                   "illum 1\n",
@@ -474,15 +475,16 @@ void write_mesh(const TriangleMesh& mesh, const std::filesystem::path& path,
 }
 
 void write_colored(const std::vector<ColoredMesh>& volumes,
-                   const std::filesystem::path& path, MeshFormat format) {
+                   const std::filesystem::path& path, MeshFormat format,
+                   const std::vector<Rgb>& colors) {
   switch (format) {
     case MeshFormat::ThreeMf:
-      write_file_atomically(path, encode_3mf(volumes));
+      write_file_atomically(path, encode_3mf(volumes, colors));
       return;
     case MeshFormat::Obj: {
       std::filesystem::path mtl = path;
       mtl.replace_extension(".mtl");
-      write_file_atomically(mtl, encode_mtl(volumes));
+      write_file_atomically(mtl, encode_mtl(volumes, colors));
       write_file_atomically(path, encode_obj(volumes, mtl));
       return;
     }

@@ -3,6 +3,7 @@
 #include "lsolid/print_settings.hpp"
 
 #include <algorithm>
+#include <charconv>
 
 #include "lsolid/units.hpp"
 #include "lsys/diagnostic.hpp"
@@ -34,8 +35,48 @@ Base parse_base(const std::string& text, const std::string& what) {
       .message = "base must be auto, disc or none, not '" + text + "'"});
 }
 
+std::vector<Rgb> parse_colors(const std::string& text,
+                              const std::string& what) {
+  std::vector<Rgb> colors;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    if (text[at] == ' ' || text[at] == ',' || text[at] == '\t') {
+      ++at;
+      continue;
+    }
+    std::size_t end = at;
+    while (end < text.size() && text[end] != ' ' && text[end] != ',' &&
+           text[end] != '\t') {
+      ++end;
+    }
+    const std::string word = text.substr(at, end - at);
+    unsigned value = 0;
+    const bool hex_digits =
+        word.size() == 7 && word[0] == '#' &&
+        std::from_chars(word.data() + 1, word.data() + 7, value, 16).ptr ==
+            word.data() + 7;
+    if (!hex_digits) {
+      throw lsys::ParseError(
+          lsys::Diagnostic{.file = what,
+                           .line = 1,
+                           .column = static_cast<int>(at) + 1,
+                           .message = "a colour is #RRGGBB, not '" + word + "'",
+                           .source_line = text});
+    }
+    colors.push_back(Rgb{static_cast<std::uint8_t>(value >> 16),
+                         static_cast<std::uint8_t>((value >> 8) & 0xFF),
+                         static_cast<std::uint8_t>(value & 0xFF)});
+    at = end;
+  }
+  if (colors.empty()) {
+    throw lsys::ParseError(lsys::Diagnostic{
+        .file = what, .message = "no colour given: list #RRGGBB colours"});
+  }
+  return colors;
+}
+
 std::vector<std::string> print_setting_names() {
-  return {"wall", "height", "size", "scale", "tolerance", "base"};
+  return {"wall", "height", "size", "scale", "tolerance", "base", "colors"};
 }
 
 PrintSettings resolve_print_settings(const lsys::Grammar& grammar,
@@ -43,7 +84,8 @@ PrintSettings resolve_print_settings(const lsys::Grammar& grammar,
                                      bool command_line_sets_size,
                                      bool command_line_sets_wall,
                                      bool command_line_sets_tolerance,
-                                     bool command_line_sets_base) {
+                                     bool command_line_sets_base,
+                                     bool command_line_sets_colors) {
   PrintSettings file;
   int sizes = 0;
   std::size_t second_size = 0;
@@ -59,6 +101,17 @@ PrintSettings resolve_print_settings(const lsys::Grammar& grammar,
         file.base = parse_base(s.value, s.key);
       } catch (const lsys::ParseError& e) {
         throw lsys::error_at(*grammar.source, s.offset, e.diagnostic().message);
+      }
+      continue;
+    }
+    if (s.key == "colors") {
+      try {
+        file.colors = parse_colors(s.value, s.key);
+      } catch (const lsys::ParseError& e) {
+        throw lsys::error_at(*grammar.source,
+                             s.offset + static_cast<std::size_t>(std::max(
+                                            0, e.diagnostic().column - 1)),
+                             e.diagnostic().message);
       }
       continue;
     }
@@ -85,6 +138,7 @@ PrintSettings resolve_print_settings(const lsys::Grammar& grammar,
   if (command_line_sets_wall) out.wall_mm = command_line.wall_mm;
   if (command_line_sets_tolerance) out.tolerance_mm = command_line.tolerance_mm;
   if (command_line_sets_base) out.base = command_line.base;
+  if (command_line_sets_colors) out.colors = command_line.colors;
   return out;
 }
 

@@ -295,6 +295,10 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
     print.height_mm.reset();
     print.size_mm.reset();
   }
+  // Indices of one colour are one material: one volume, one base material.
+  for (Part& part : parts.parts) {
+    part.color = material_index(part.color, options.print.colors);
+  }
   report.mm_per_unit = scaled.mm_per_unit;
   report.tubes = parts.tubes;
   report.junctions = parts.junctions;

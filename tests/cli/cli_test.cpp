@@ -383,6 +383,32 @@ TEST_F(Build, WritesOneVolumePerColourForAMultiMaterialPrinter) {
               1U)
         << extruder;
   }
+  // Given colours, indices of one colour print as one volume: branch 2
+  // takes the last colour given, branch 1's.
+  const auto two = run_command(
+      lsolid() +
+          " three.ls --multi-material --colors '#7B4A2A #8CC63F' -o two.3mf "
+          "--json",
+      dir_);
+  ASSERT_EQ(two.exit_code, 0) << two.err;
+  EXPECT_NE(two.out.find("\"colors\": [{\"color\": 0, \"rgb\": "
+                         "\"#7B4A2A\", \"triangles\": "),
+            std::string::npos)
+      << two.out;
+  EXPECT_NE(two.out.find("{\"color\": 1, \"rgb\": \"#8CC63F\""),
+            std::string::npos);
+  EXPECT_EQ(two.out.find("\"color\": 2"), std::string::npos) << two.out;
+  EXPECT_NE(two.out.find("\"volumes\": [{\"color\": 0, \"triangles\": "),
+            std::string::npos);
+  const auto check_two = run_command(lsolid() + " check two.3mf", dir_);
+  EXPECT_EQ(check_two.exit_code, 0) << check_two.out;
+  EXPECT_NE(check_two.out.find("two.3mf: 2 volumes\n"), std::string::npos);
+  const auto bad =
+      run_command(lsolid() + " three.ls --colors '#7B4A2A red' -o x.3mf", dir_);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_EQ(bad.err,
+            "--colors:1:9: error: a colour is #RRGGBB, not 'red'\n#7B4A2A "
+            "red\n        ^\n");
   const auto obj = run_command(
       lsolid() + " three.ls --multi-material -o three.obj -q", dir_);
   EXPECT_EQ(obj.exit_code, 0) << obj.err;

@@ -24,6 +24,22 @@ TEST(Colors, GivesBarkThenGreensAndGoesRound) {
   }
 }
 
+TEST(Colors, TakesTheColoursGivenAndMergesIndicesOfOneColour) {
+  const std::vector<Rgb> bark_and_leaf{
+      {0x7B, 0x4A, 0x2A}, {0x7B, 0x4A, 0x2A}, {0x8C, 0xC6, 0x3F}};
+  EXPECT_EQ(hex(palette_color(1, bark_and_leaf)), "#7B4A2A");
+  EXPECT_EQ(hex(palette_color(2, bark_and_leaf)), "#8CC63F");
+  EXPECT_EQ(hex(palette_color(7, bark_and_leaf)), "#8CC63F");  // the last
+  EXPECT_EQ(material_index(0, bark_and_leaf), 0);
+  EXPECT_EQ(material_index(1, bark_and_leaf), 0);
+  EXPECT_EQ(material_index(2, bark_and_leaf), 2);
+  EXPECT_EQ(material_index(9, bark_and_leaf), 2);
+  // lsolid's own palette goes round every ten.
+  EXPECT_EQ(material_index(4), 4);
+  EXPECT_EQ(material_index(13), 3);
+  EXPECT_EQ(material_index(-1), 0);
+}
+
 TEST(Colors, ColoursEachTriangleByTheNearestPart) {
   // A stem box of colour 0 and a leaf box of colour 3 beside it: the
   // "union" is both, each triangle on the surface of one of them.

@@ -214,6 +214,23 @@ TEST(Solid, BuildsOneVolumePerColourThatDoNotOverlap) {
               0.01 * s.report.validation.volume_mm3);
 }
 
+TEST(Solid, ReadsColoursFromTheFileAndRefusesBadOnes) {
+  const lsys::Grammar g = parse("colors: #7B4A2A, #8cc63f\nF\n");
+  const PrintSettings s = resolve_print_settings(g, {}, false, false, false);
+  ASSERT_EQ(s.colors.size(), 2U);
+  EXPECT_EQ(hex(s.colors[1]), "#8CC63F");
+  try {
+    (void)resolve_print_settings(parse("colors: #7B4A2A #12345\nF\n"), {},
+                                 false, false, false);
+    FAIL() << "no error";
+  } catch (const lsys::ParseError& e) {
+    EXPECT_EQ(e.diagnostic().line, 1);
+    EXPECT_EQ(e.diagnostic().column, 17);
+    EXPECT_EQ(e.diagnostic().message, "a colour is #RRGGBB, not '#12345'");
+  }
+  EXPECT_THROW((void)parse_colors(" , ", "--colors"), lsys::ParseError);
+}
+
 TEST(Solid, ReadsPrintSettingsFromTheFileUnlessTheCommandLineGivesThem) {
   const lsys::Grammar g = parse("wall: 1.5mm\nheight: 4cm\n\u03C9: F\n");
   const PrintSettings file = resolve_print_settings(g, {}, false, false, false);

@@ -19,11 +19,18 @@ struct Rgb {
   bool operator==(const Rgb&) const = default;
 };
 
-/// The colour lsolid gives a turtle colour index (ABOP's `'`, cpfg's `;`):
-/// 0 bark brown, 1 dark green, 2 green, 3 leaf green, 4 yellow, 5 orange,
-/// 6 red, 7 purple, 8 white, 9 blue, then round again. Negative indices
-/// are taken as 0.
-[[nodiscard]] Rgb palette_color(int index) noexcept;
+/// The colour of a turtle colour index (ABOP's `'`, cpfg's `;`): from
+/// `colors` if given (an index past its end takes the last), else lsolid's
+/// palette: 0 bark brown, 1 dark green, 2 green, 3 leaf green, 4 yellow,
+/// 5 orange, 6 red, 7 purple, 8 white, 9 blue, then round again. Negative
+/// indices are taken as 0.
+[[nodiscard]] Rgb palette_color(int index, const std::vector<Rgb>& colors = {});
+
+/// The material a colour index prints in: the lowest index of the same
+/// colour, so that indices given one colour become one material (and with
+/// `--multi-material` one volume).
+[[nodiscard]] int material_index(int index,
+                                 const std::vector<Rgb>& colors = {});
 
 /// `#RRGGBB`.
 [[nodiscard]] std::string hex(Rgb color);

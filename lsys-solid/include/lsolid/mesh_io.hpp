@@ -51,10 +51,12 @@ void write_mesh(const TriangleMesh& mesh, const std::filesystem::path& path,
 /// object (with one part per volume when there are several) whose
 /// triangles carry base materials in palette_color; in OBJ, an object per
 /// volume and `usemtl colour_N` groups, with `name.mtl` beside it giving
-/// each colour's `Kd` (written first, then the OBJ). STL, OFF and SCAD get
+/// each colour's `Kd` (written first, then the OBJ). Colour indices take
+/// their colours from `colors` (see palette_color). STL, OFF and SCAD get
 /// all volumes as one mesh, without colour.
 /// @throws IoError.
 void write_colored(const std::vector<ColoredMesh>& volumes,
-                   const std::filesystem::path& path, MeshFormat format);
+                   const std::filesystem::path& path, MeshFormat format,
+                   const std::vector<Rgb>& colors = {});
 
 }  // namespace lsolid

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "lsolid/colors.hpp"
 #include "lsys/grammar.hpp"
 
 namespace lsolid {
@@ -26,11 +27,19 @@ struct PrintSettings {
   std::optional<double> scale_mm_per_unit;  ///< millimetres per model unit
   double tolerance_mm = 0.05;  ///< chord error of tube cross-sections
   Base base = Base::Auto;
+  /// The colour of each turtle colour index for 3MF and OBJ (`colors:
+  /// #7B4A2A #8CC63F`); empty: lsolid's palette (see palette_color).
+  std::vector<Rgb> colors;
 };
 
 /// `auto`, `disc` or `none`.
 /// @throws lsys::ParseError naming `what` for anything else.
 [[nodiscard]] Base parse_base(const std::string& text, const std::string& what);
+
+/// `#RRGGBB` colours separated by spaces or commas.
+/// @throws lsys::ParseError naming `what`, with the column of a bad colour.
+[[nodiscard]] std::vector<Rgb> parse_colors(const std::string& text,
+                                            const std::string& what);
 
 /// The setting names a `.ls` file may use for print settings (`wall: 0.8mm`),
 /// to pass as lsys::ParseOptions::extra_settings.
@@ -42,6 +51,7 @@ struct PrintSettings {
 [[nodiscard]] PrintSettings resolve_print_settings(
     const lsys::Grammar& grammar, const PrintSettings& command_line,
     bool command_line_sets_size, bool command_line_sets_wall,
-    bool command_line_sets_tolerance, bool command_line_sets_base = false);
+    bool command_line_sets_tolerance, bool command_line_sets_base = false,
+    bool command_line_sets_colors = false);
 
 }  // namespace lsolid

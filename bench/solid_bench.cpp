@@ -28,11 +28,12 @@ lsys::Grammar load(const std::string& name) {
 
 // The peak resident set of one build, in a forked child so that the
 // figure is this case's alone.
-double peak_rss_mib(const lsys::Grammar& grammar, int n) {
+double peak_rss_mib(const lsys::Grammar& grammar, int n, bool multi) {
   const pid_t child = fork();
   if (child == 0) {
-    const lsolid::Solid s =
-        lsolid::build_solid(grammar, {.derivation = {.derivation_length = n}});
+    const lsolid::Solid s = lsolid::build_solid(
+        grammar,
+        {.derivation = {.derivation_length = n}, .multi_material = multi});
     _exit(s.report.validation.is_printable() ? 0 : 1);
   }
   int status = 0;
@@ -41,13 +42,18 @@ double peak_rss_mib(const lsys::Grammar& grammar, int n) {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;
 }
 
-void build(benchmark::State& state, const std::string& file, int n) {
+// With `multi`, also the volumes per colour of --multi-material.
+void build(benchmark::State& state, const std::string& file, int n,
+           bool multi = false) {
   const lsys::Grammar grammar = load(file);
   lsolid::SolidReport report;
+  std::size_t volumes = 0;
   for (auto _ : state) {
-    const lsolid::Solid s =
-        lsolid::build_solid(grammar, {.derivation = {.derivation_length = n}});
+    const lsolid::Solid s = lsolid::build_solid(
+        grammar,
+        {.derivation = {.derivation_length = n}, .multi_material = multi});
     report = s.report;
+    volumes = s.volumes.size();
     if (!report.validation.is_printable()) state.SkipWithError("not printable");
   }
   state.counters["segments"] = static_cast<double>(report.segments);
@@ -55,14 +61,21 @@ void build(benchmark::State& state, const std::string& file, int n) {
   state.counters["parts"] =
       static_cast<double>(report.tubes + report.joints + report.plates);
   state.counters["booleans"] = static_cast<double>(report.union_stats.booleans);
+  state.counters["union_triangles"] =
+      static_cast<double>(report.decimation.triangles_before);
   state.counters["triangles"] =
       static_cast<double>(report.validation.triangles);
   state.counters["skeleton_s"] = report.seconds.skeleton;
   state.counters["parts_s"] = report.seconds.parts;
   state.counters["union_s"] = report.seconds.unite;
   state.counters["rounding_s"] = report.seconds.round;
+  state.counters["decimate_s"] = report.seconds.decimate;
   state.counters["check_s"] = report.seconds.check;
-  state.counters["peak_rss_MiB"] = peak_rss_mib(grammar, n);
+  if (multi) {
+    state.counters["volumes"] = static_cast<double>(volumes);
+    state.counters["volumes_s"] = report.seconds.volumes;
+  }
+  state.counters["peak_rss_MiB"] = peak_rss_mib(grammar, n, multi);
 }
 
 BENCHMARK_CAPTURE(build, hilbert_n3, "hilbert-cube.ls", 3)
@@ -75,6 +88,9 @@ BENCHMARK_CAPTURE(build, bush_n6, "abop-1.25-bush.ls", 6)
     ->Unit(benchmark::kSecond)
     ->Iterations(1);
 BENCHMARK_CAPTURE(build, bush_n7, "abop-1.25-bush.ls", 7)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
+BENCHMARK_CAPTURE(build, bush_n5_multi_material, "abop-1.25-bush.ls", 5, true)
     ->Unit(benchmark::kSecond)
     ->Iterations(1);
 

@@ -16,10 +16,13 @@
 #include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cfloat>
 #include <cmath>
+#include <cstdint>
 #include <queue>
 #include <tuple>
+#include <unordered_set>
 #include <vector>
 
 #include "intersection_guard.hpp"
@@ -251,15 +254,59 @@ std::size_t run(Mesh& mesh, SurfaceDistance& input_surface,
                                      guard, tell);
 }
 
-}  // namespace
+// A triangle by its corners' coordinates, whichever corner comes first:
+// collapses move no vertex, so a triangle the decimation left alone has the
+// same key in the input and the output.
+using TriangleKey = std::array<std::uint64_t, 9>;
+
+TriangleKey key_of(const TriangleMesh& mesh,
+                   const std::array<std::uint32_t, 3>& t) {
+  std::array<std::array<std::uint64_t, 3>, 3> corners{};
+  for (int c = 0; c < 3; ++c) {
+    const glm::dvec3& p = mesh.vertices[t[static_cast<std::size_t>(c)]];
+    corners[static_cast<std::size_t>(c)] = {std::bit_cast<std::uint64_t>(p.x),
+                                            std::bit_cast<std::uint64_t>(p.y),
+                                            std::bit_cast<std::uint64_t>(p.z)};
+  }
+  // Rotate the smallest corner first; the orientation stays.
+  const std::size_t first = static_cast<std::size_t>(
+      std::min_element(corners.begin(), corners.end()) - corners.begin());
+  TriangleKey key{};
+  for (std::size_t c = 0; c < 3; ++c) {
+    const auto& q = corners[(first + c) % 3];
+    std::copy(q.begin(), q.end(),
+              key.begin() + static_cast<std::ptrdiff_t>(3 * c));
+  }
+  return key;
+}
+
+struct TriangleKeyHash {
+  std::size_t operator()(const TriangleKey& k) const noexcept {
+    std::uint64_t h = 0xcbf29ce484222325ULL;
+    for (const std::uint64_t v : k) h = (h ^ v) * 0x100000001b3ULL;
+    return static_cast<std::size_t>(h);
+  }
+};
+
+using TriangleSet = std::unordered_set<TriangleKey, TriangleKeyHash>;
+
+TriangleSet triangle_set(const TriangleMesh& mesh) {
+  TriangleSet set;
+  set.reserve(mesh.triangles.size());
+  for (const auto& t : mesh.triangles) set.insert(key_of(mesh, t));
+  return set;
+}
 
 // The largest distance from points of `from` to `to`, sampled at every
 // vertex and on a barycentric grid over every triangle about kSampleSpacingMm
-// apart (at most 16 steps a side); capped at `limit_mm`.
+// apart (at most 16 steps a side); capped at `limit_mm`. Triangles in
+// `unchanged`, which `to` has too, lie at distance 0 and are skipped: on the
+// bush at n = 6 that is most of the measuring time saved.
 double sampled_distance(const TriangleMesh& from, SurfaceDistance& to,
-                        double limit_mm) {
+                        double limit_mm, const TriangleSet& unchanged) {
   double worst = 0.0;
   for (const auto& t : from.triangles) {
+    if (unchanged.contains(key_of(from, t))) continue;
     const glm::dvec3& a = from.vertices[t[0]];
     const glm::dvec3& b = from.vertices[t[1]];
     const glm::dvec3& c = from.vertices[t[2]];
@@ -281,6 +328,8 @@ double sampled_distance(const TriangleMesh& from, SurfaceDistance& to,
   }
   return worst;
 }
+
+}  // namespace
 
 Decimated decimate(const TriangleMesh& input, const DecimateOptions& options) {
   if (!(options.tolerance_mm > 0.0)) {
@@ -334,8 +383,10 @@ Decimated decimate(const TriangleMesh& input, const DecimateOptions& options) {
     const double limit_mm = 100.0 * options.tolerance_mm;
     SurfaceDistance output_surface(out.mesh);
     stats.max_deviation_mm =
-        std::max(sampled_distance(input, output_surface, limit_mm),
-                 sampled_distance(out.mesh, input_surface, limit_mm));
+        std::max(sampled_distance(input, output_surface, limit_mm,
+                                  triangle_set(out.mesh)),
+                 sampled_distance(out.mesh, input_surface, limit_mm,
+                                  triangle_set(input)));
   }
   if (options.progress) options.progress(1.0);
   return out;

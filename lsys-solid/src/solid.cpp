@@ -191,7 +191,7 @@ void unite_and_finish(std::vector<Part> parts, const SolidOptions& options,
 // inside its stem, colour 0 keeps all of its own). Volumes that nothing is
 // left of are dropped.
 // @throws GeometryError if a volume is not printable.
-std::vector<ColoredMesh> colour_volumes(std::vector<Part> parts,
+std::vector<ColoredMesh> color_volumes(std::vector<Part> parts,
                                         const Solid& whole,
                                         const SolidOptions& options,
                                         const Progress& tell) {
@@ -324,7 +324,7 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   if (options.multi_material && options.unite &&
       report.validation.is_printable()) {
     tell("volumes", 0.0);
-    solid.volumes = colour_volumes(std::move(colored), solid, options, tell);
+    solid.volumes = color_volumes(std::move(colored), solid, options, tell);
     report.seconds.volumes = clock.lap();
     tell("volumes", 1.0);
   }

@@ -129,16 +129,23 @@ class SurfaceDistance {
     const double squared = distance_mm * distance_mm;
     ++stamp_;
     bool found = false;
+    const auto near = [&](std::uint32_t i) {
+      const auto& t = mesh_.triangles[i];
+      const glm::dvec3 d = closest_point_on_triangle(p, mesh_.vertices[t[0]],
+                                                     mesh_.vertices[t[1]],
+                                                     mesh_.vertices[t[2]]) -
+                           p;
+      return glm::dot(d, d) <= squared;
+    };
+    // Queries come in runs of nearby points (samples on one triangle):
+    // the triangle that answered the last one mostly answers this one.
+    if (hint_ < mesh_.triangles.size() && near(hint_)) return true;
     const auto test = [&](const std::vector<std::uint32_t>& cell) {
       for (const std::uint32_t i : cell) {
         if (seen_[i] == stamp_) continue;
         seen_[i] = stamp_;
-        const auto& t = mesh_.triangles[i];
-        const glm::dvec3 q = closest_point_on_triangle(p, mesh_.vertices[t[0]],
-                                                       mesh_.vertices[t[1]],
-                                                       mesh_.vertices[t[2]]);
-        const glm::dvec3 d = q - p;
-        if (glm::dot(d, d) <= squared) {
+        if (near(i)) {
+          hint_ = i;
           found = true;
           return;
         }
@@ -190,6 +197,7 @@ class SurfaceDistance {
   std::vector<std::uint32_t> large_;
   std::vector<std::uint32_t> seen_;
   std::uint32_t stamp_ = 0;
+  std::uint32_t hint_ = ~std::uint32_t{0};  ///< the last triangle within()
 };
 
 }  // namespace lsolid

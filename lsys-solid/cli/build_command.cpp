@@ -50,11 +50,10 @@ void print_report(const SolidReport& r, bool united) {
         r.union_stats.booleans, r.union_stats.rounded,
         r.union_stats.concatenations, r.union_stats.retries, r.cavities_filled);
   }
-  if (r.placement.lies_flat && r.placement.parts_left_uncut > 0) {
+  if (r.placement.lies_flat && r.placement.cut_refused) {
     fmt::print(
         "placement: planar, lying flat on round undersides; not cut flat, "
-        "as {} parts would not stay printable cut\n",
-        r.placement.parts_left_uncut);
+        "as the cut model would not be printable\n");
   } else if (r.placement.lies_flat) {
     fmt::print(
         "placement: planar, lying flat; underside cut flat {:.2f} mm below "

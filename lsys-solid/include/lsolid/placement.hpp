@@ -23,14 +23,14 @@ struct Placement {
   /// narrower horizontal side.
   double footprint_mm = 0.0;
   /// A planar model was turned to lie flat; its underside is to be cut off
-  /// at `cut_z_mm` (in the placed coordinates) for a flat contact face.
+  /// at `cut_z_mm` (in the placed coordinates) for a flat contact face. The
+  /// build cuts the united model and moves it down by that height.
   bool lies_flat = false;
   double cut_z_mm = 0.0;
   double cut_depth_mm = 0.0;  ///< how far below the skeleton's plane
-  /// Parts whose cut would not be printable once rounded to doubles. When
-  /// there is any, no part is cut (`cut_z_mm` is 0): the model lies on its
-  /// round undersides rather than leave a part hanging below the bed.
-  std::size_t parts_left_uncut = 0;
+  /// The cut model would not have been printable once rounded, so it was
+  /// left whole, lying on its round undersides (`cut_z_mm` is then 0).
+  bool cut_refused = false;
 };
 
 /// The plane a planar skeleton is drawn in, in millimetres.

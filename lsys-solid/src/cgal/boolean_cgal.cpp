@@ -412,6 +412,10 @@ UnionResult union_parts(std::vector<Part> parts,
 TriangleMesh subtract(const TriangleMesh& a, const TriangleMesh& b) {
   ExactMesh first = to_surface_mesh<ExactMesh>(a);
   ExactMesh second = to_surface_mesh<ExactMesh>(b);
+  if (first.is_empty() || second.is_empty()) {
+    throw GeometryError(
+        "cannot subtract volumes that are not closed 2-manifolds");
+  }
   ExactMesh out;
   bool ok = false;
   try {

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <array>
@@ -12,25 +13,6 @@
 #include "lsolid/mesh.hpp"
 
 namespace lsolid {
-
-/// A CGAL Surface_mesh of the triangles; empty if a triangle cannot be added
-/// (the triangles do not form a 2-manifold with consistent orientation).
-template <typename Mesh>
-Mesh to_surface_mesh(const TriangleMesh& m) {
-  Mesh out;
-  std::vector<typename Mesh::Vertex_index> vertices;
-  vertices.reserve(m.vertices.size());
-  for (const glm::dvec3& p : m.vertices) {
-    vertices.push_back(out.add_vertex(typename Mesh::Point(p.x, p.y, p.z)));
-  }
-  for (const auto& t : m.triangles) {
-    if (out.add_face(vertices[t[0]], vertices[t[1]], vertices[t[2]]) ==
-        Mesh::null_face()) {
-      return Mesh();
-    }
-  }
-  return out;
-}
 
 /// A mesh as CGAL's polygon soup: points and index triples.
 template <typename Point>
@@ -46,11 +28,42 @@ template <typename Point>
 PolygonSoup<Point> polygon_soup(const TriangleMesh& m) {
   PolygonSoup<Point> soup;
   soup.points.reserve(m.vertices.size());
-  for (const glm::dvec3& p : m.vertices)
+  for (const glm::dvec3& p : m.vertices) {
     soup.points.emplace_back(p.x, p.y, p.z);
+  }
   soup.polygons.reserve(m.triangles.size());
-  for (const auto& t : m.triangles) soup.polygons.push_back({t[0], t[1], t[2]});
+  for (const auto& t : m.triangles) {
+    soup.polygons.push_back({t[0], t[1], t[2]});
+  }
   return soup;
+}
+
+/// A CGAL Surface_mesh of the triangles; empty if they do not form a
+/// 2-manifold with consistent orientation. Faces are added one by one and,
+/// if that fails (a decimated mesh lists a vertex's fan out of order, and
+/// add_face refuses to complete it), through PMP's polygon soup.
+template <typename Mesh>
+Mesh to_surface_mesh(const TriangleMesh& m) {
+  Mesh out;
+  std::vector<typename Mesh::Vertex_index> vertices;
+  vertices.reserve(m.vertices.size());
+  for (const glm::dvec3& p : m.vertices) {
+    vertices.push_back(out.add_vertex(typename Mesh::Point(p.x, p.y, p.z)));
+  }
+  for (const auto& t : m.triangles) {
+    if (out.add_face(vertices[t[0]], vertices[t[1]], vertices[t[2]]) ==
+        Mesh::null_face()) {
+      auto soup = polygon_soup<typename Mesh::Point>(m);
+      Mesh stitched;
+      if (CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(
+              soup.polygons)) {
+        CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(
+            soup.points, soup.polygons, stitched);
+      }
+      return stitched;
+    }
+  }
+  return out;
 }
 
 /// The triangles of a Surface_mesh, with coordinates rounded to doubles.

@@ -71,7 +71,8 @@ void add_print_options(CLI::App& command, PrintInput& input) {
   height->excludes(size)->excludes(scale);
   size->excludes(scale);
   command.add_option("--tolerance", input.tolerance,
-                     "chord error of tube cross-sections (default 0.05mm)");
+                     "chord error of tube cross-sections, and how far "
+                     "decimation may move the surface (default 0.05mm)");
   command.add_option("--base", input.base,
                      "auto: a disc under a model that would stand on a small "
                      "footprint (default); disc; none");

@@ -53,7 +53,7 @@ struct StageSeconds {
   double skeleton = 0.0;  ///< parse is before; derivation and turtle
   double parts = 0.0;     ///< scaling and meshing the parts
   double unite = 0.0;     ///< the boolean union
-  double round = 0.0;     ///< rounding to the file's precision, with repair
+  double round = 0.0;     ///< rounding, repair, and a planar model's cut
   double decimate = 0.0;  ///< decimation and measuring its deviation
   double check = 0.0;     ///< validation of the mesh as it will be written
   double volumes = 0.0;   ///< the volumes per colour (multi_material)

@@ -24,10 +24,16 @@
 namespace lsolid::cli {
 namespace {
 
-// How many triangles of each colour are written.
+// How many triangles of each colour are written: those of the volumes with
+// --multi-material, else those of the one mesh.
 std::map<int, std::size_t> color_counts(const Solid& solid) {
   std::map<int, std::size_t> triangles;
-  for (const int c : solid.colors) ++triangles[c];
+  for (const ColoredMesh& v : solid.volumes) {
+    for (const int c : v.colors) ++triangles[c];
+  }
+  if (solid.volumes.empty()) {
+    for (const int c : solid.colors) ++triangles[c];
+  }
   if (triangles.empty()) triangles[0] = solid.mesh.triangles.size();
   return triangles;
 }
@@ -194,14 +200,19 @@ void print_colors(const Solid& solid, const std::vector<Rgb>& palette) {
   fmt::print("colours: {}\n", fmt::join(names, ", "));
   if (solid.volumes.empty()) return;
   std::vector<std::string> volumes;
+  std::size_t written = 0;
   for (const ColoredMesh& v : solid.volumes) {
     volumes.push_back(fmt::format("colour {} {:.1f} mm³",
                                   v.colors.empty() ? 0 : v.colors.front(),
                                   signed_volume(v.mesh)));
+    written += v.mesh.triangles.size();
   }
-  fmt::print("volumes: {} for {} extruders, not overlapping: {}\n",
-             solid.volumes.size(), solid.volumes.size(),
-             fmt::join(volumes, ", "));
+  // The report's other lines describe the whole model as one union.
+  fmt::print(
+      "volumes: {} for {} extruders, not overlapping, {} triangles written: "
+      "{}\n",
+      solid.volumes.size(), solid.volumes.size(), written,
+      fmt::join(volumes, ", "));
 }
 
 }  // namespace
@@ -230,6 +241,12 @@ int run_build(const BuildCommand& command) {
   }
   const bool colored =
       format == MeshFormat::ThreeMf || format == MeshFormat::Obj;
+  if (command.print.colors && !colored) {
+    std::fprintf(stderr,
+                 "warning: --colors is for .3mf and .obj output; %s is "
+                 "written without colour\n",
+                 output.filename().string().c_str());
+  }
   if (command.multi_material && !colored) {
     throw lsys::ParseError(lsys::Diagnostic{
         .file = "--multi-material",

@@ -96,7 +96,7 @@ int main(int argc, char** argv) {
   lsolid::cli::CheckCommand check;
   CLI::App* check_app = app.add_subcommand(
       "check",
-      "check that an STL or OFF mesh is printable (exit 0 yes, 1 no, "
+      "check that an STL, OFF, 3MF or OBJ mesh is printable (exit 0 yes, 1 no, "
       "2 unreadable)");
   check_app->add_option("MESH", check.file, "the mesh to check")->required();
   check_app->add_flag("--json", check.json, "print the report as JSON");

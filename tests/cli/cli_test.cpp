@@ -348,9 +348,11 @@ TEST_F(Build, WritesOneVolumePerColourForAMultiMaterialPrinter) {
   const auto r =
       run_command(lsolid() + " three.ls --multi-material -o three.3mf", dir_);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("volumes: 3 for 3 extruders, not overlapping: colour "
-                       "0 "),
-            std::string::npos)
+  std::smatch written;
+  ASSERT_TRUE(std::regex_search(
+      r.out, written,
+      std::regex("volumes: 3 for 3 extruders, not overlapping, ([0-9]+) "
+                 "triangles written: colour 0 ")))
       << r.out;
   // lsolid check reads the volumes back apart and finds no overlap.
   const auto check = run_command(lsolid() + " check three.3mf", dir_);
@@ -358,6 +360,15 @@ TEST_F(Build, WritesOneVolumePerColourForAMultiMaterialPrinter) {
   EXPECT_NE(check.out.find("three.3mf: 3 volumes\n"), std::string::npos)
       << check.out;
   EXPECT_NE(check.out.find("volume 3 (colour 2): "), std::string::npos);
+  // The colours line counts the triangles written, as check reads them.
+  std::size_t read_back = 0;
+  const std::regex volume_line("volume [0-9] \\(colour [0-9]\\): ([0-9]+)");
+  for (auto it = std::sregex_iterator(check.out.begin(), check.out.end(),
+                                      volume_line);
+       it != std::sregex_iterator(); ++it) {
+    read_back += std::stoul((*it)[1]);
+  }
+  EXPECT_EQ(read_back, std::stoul(written[1]));
   EXPECT_NE(check.out.find("overlap: none, the volumes only touch"),
             std::string::npos)
       << check.out;
@@ -414,6 +425,12 @@ TEST_F(Build, WritesOneVolumePerColourForAMultiMaterialPrinter) {
   EXPECT_EQ(obj.exit_code, 0) << obj.err;
   EXPECT_TRUE(std::filesystem::exists(dir_ / "three.mtl"));
   EXPECT_EQ(run_command(lsolid() + " check three.obj", dir_).exit_code, 0);
+  const auto plain =
+      run_command(lsolid() + " three.ls --colors '#7B4A2A' -q -o p.stl", dir_);
+  EXPECT_EQ(plain.exit_code, 0);
+  EXPECT_EQ(plain.err,
+            "warning: --colors is for .3mf and .obj output; p.stl is written "
+            "without colour\n");
   const auto stl =
       run_command(lsolid() + " three.ls --multi-material -o three.stl", dir_);
   EXPECT_EQ(stl.exit_code, 2);

@@ -1,14 +1,15 @@
 // Copyright 2026 the lsolid authors
 // SPDX-License-Identifier: MIT
 //
-// Decimation with OpenMesh 9 (Debian's libopenmesh-dev): its quadric error
-// module (Garland and Heckbert, "Surface simplification using quadric error
-// metrics", SIGGRAPH 1997) sets the order, its normal-flip and aspect-ratio
-// modules veto, and ModIntersectionGuardT vetoes collapses that would make
-// the mesh cut itself. OpenMesh's DecimaterT asks every module about every
-// candidate each time a neighbourhood changes; the guard is far dearer than
-// the others, so this driver asks it only for the collapse it is about to
-// make, and on a refusal requeues the vertex with its next-best halfedge.
+// Decimation with OpenMesh 9 (Debian's libopenmesh-dev): a plane quadric
+// (Garland and Heckbert, "Surface simplification using quadric error
+// metrics", SIGGRAPH 1997; plane_quadric.hpp) sets the order, OpenMesh's
+// normal-flip and aspect-ratio modules veto, and ModIntersectionGuardT
+// vetoes collapses that would make the mesh cut itself. OpenMesh's DecimaterT
+// asks every module about every candidate each time a neighbourhood changes;
+// the guard is far dearer than the others, so this driver asks it only for the
+// collapse it is about to make, and on a refusal requeues the vertex with its
+// next-best halfedge.
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Decimater/BaseDecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/ModAspectRatioT.hh>

@@ -11,6 +11,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "cell_grid.hpp"
 #include "triangle_pair.hpp"
 
 namespace lsolid {
@@ -40,7 +41,8 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
       length += m.calc_edge_length(e);
       ++edges;
     }
-    cell_mm_ = edges == 0 ? 1.0 : 4.0 * length / static_cast<double>(edges);
+    grid_ =
+        CellGrid(edges == 0 ? 1.0 : 4.0 * length / static_cast<double>(edges));
     cells_.clear();
     large_.clear();
     seen_.assign(m.n_faces(), 0);
@@ -143,60 +145,33 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
            b_lo.y <= a_hi.y && a_lo.z <= b_hi.z && b_lo.z <= a_hi.z;
   }
 
-  glm::ivec3 cell_of(const glm::dvec3& p) const {
-    return glm::ivec3(glm::floor(p / cell_mm_));
-  }
-
-  static Cell key(int x, int y, int z) {
-    constexpr std::uint64_t mask = (1u << 21) - 1;
-    return (std::uint64_t(x) & mask) | ((std::uint64_t(y) & mask) << 21) |
-           ((std::uint64_t(z) & mask) << 42);
-  }
-
   // Visits the cells that the box overlaps and the list of faces too large
   // for cells; a box over more cells than are filled visits every cell.
   template <typename Visit>
   void for_cells(const glm::dvec3& lo, const glm::dvec3& hi, Visit visit) {
     visit(large_);
-    const glm::ivec3 a = cell_of(lo);
-    const glm::ivec3 b = cell_of(hi);
-    if (cell_count(a, b) > double(cells_.size())) {
+    if (grid_.count(lo, hi) > double(cells_.size())) {
       for (auto& [key, cell] : cells_) visit(cell);
       return;
     }
-    for (int x = a.x; x <= b.x; ++x) {
-      for (int y = a.y; y <= b.y; ++y) {
-        for (int z = a.z; z <= b.z; ++z) {
-          const auto it = cells_.find(key(x, y, z));
-          if (it != cells_.end()) visit(it->second);
-        }
-      }
-    }
-  }
-
-  static double cell_count(const glm::ivec3& a, const glm::ivec3& b) {
-    return double(b.x - a.x + 1) * double(b.y - a.y + 1) *
-           double(b.z - a.z + 1);
+    grid_.for_each(lo, hi, [&](Cell key, const glm::dvec3&) {
+      const auto it = cells_.find(key);
+      if (it != cells_.end()) visit(it->second);
+    });
   }
 
   void insert(typename MeshT::FaceHandle f) {
     const auto [lo, hi] = box(triangle(f));
-    const glm::ivec3 a = cell_of(lo);
-    const glm::ivec3 b = cell_of(hi);
     // A long sliver (the flat underside's triangulation has many) would
     // fill thousands of cells: it goes to the list every query visits.
-    if (cell_count(a, b) > kLargeCells) {
+    if (grid_.count(lo, hi) > kLargeCells) {
       large_.push_back(f.idx());
       return;
     }
-    for (int x = a.x; x <= b.x; ++x) {
-      for (int y = a.y; y <= b.y; ++y) {
-        for (int z = a.z; z <= b.z; ++z) {
-          std::vector<int>& cell = cells_[key(x, y, z)];
-          if (cell.empty() || cell.back() != f.idx()) cell.push_back(f.idx());
-        }
-      }
-    }
+    grid_.for_each(lo, hi, [&](Cell key, const glm::dvec3&) {
+      std::vector<int>& cell = cells_[key];
+      if (cell.empty() || cell.back() != f.idx()) cell.push_back(f.idx());
+    });
   }
 
   bool refuse() {
@@ -205,7 +180,7 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
   }
 
   static constexpr double kLargeCells = 512.0;
-  double cell_mm_ = 1.0;
+  CellGrid grid_;
   std::unordered_map<Cell, std::vector<int>> cells_;
   std::vector<int> large_;
   std::vector<std::uint32_t> seen_;      // per face: last query

@@ -408,6 +408,14 @@ std::string encode_obj(const std::vector<ColoredMesh>& volumes,
   return out;
 }
 
+std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, std::string("cannot read: ") + std::strerror(errno));
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
 TriangleMesh merged(const std::vector<ColoredMesh>& volumes) {
   TriangleMesh mesh;
   for (const ColoredMesh& v : volumes) append(mesh, v.mesh);
@@ -431,11 +439,7 @@ MeshFormat format_for(const std::filesystem::path& path, bool ascii) {
 TriangleMesh read_mesh(const std::filesystem::path& path) {
   const std::string ext = lower_extension(path);
   if (ext == ".3mf" || ext == ".obj") return merged(read_colored(path));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, std::string("cannot read: ") + std::strerror(errno));
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  const std::string data = buffer.str();
+  const std::string data = read_file(path);
   if (data.starts_with("OFF") || ext == ".off") return read_off(data, path);
   if (data.size() >= 84) {
     std::uint32_t count = 0;
@@ -452,13 +456,7 @@ std::vector<ColoredMesh> read_colored(const std::filesystem::path& path) {
     if (!std::filesystem::exists(path)) fail(path, "cannot read: no such file");
     return decode_3mf(path);
   }
-  if (ext == ".obj") {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) fail(path, std::string("cannot read: ") + std::strerror(errno));
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    return read_obj(buffer.str(), path);
-  }
+  if (ext == ".obj") return read_obj(read_file(path), path);
   TriangleMesh mesh = read_mesh(path);
   const std::size_t n = mesh.triangles.size();
   return {

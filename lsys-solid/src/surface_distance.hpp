@@ -8,10 +8,10 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
-#include <type_traits>
 #include <unordered_map>
 #include <vector>
 
+#include "cell_grid.hpp"
 #include "lsolid/mesh.hpp"
 
 namespace lsolid {
@@ -59,9 +59,10 @@ class SurfaceDistance {
     for (const auto& t : mesh.triangles) {
       length += glm::distance(mesh.vertices[t[0]], mesh.vertices[t[1]]);
     }
-    cell_mm_ = mesh.triangles.empty()
-                   ? 1.0
-                   : 2.0 * length / static_cast<double>(mesh.triangles.size());
+    grid_ = CellGrid(mesh.triangles.empty()
+                         ? 1.0
+                         : 2.0 * length /
+                               static_cast<double>(mesh.triangles.size()));
     seen_.assign(mesh.triangles.size(), 0);
     for (std::uint32_t i = 0; i < mesh.triangles.size(); ++i) {
       const auto& t = mesh.triangles[i];
@@ -70,21 +71,24 @@ class SurfaceDistance {
       const glm::dvec3& c = mesh.vertices[t[2]];
       const glm::dvec3 lo = glm::min(glm::min(a, b), c);
       const glm::dvec3 hi = glm::max(glm::max(a, b), c);
-      const double cells = cell_count(lo, hi);
+      const double cells = grid_.count(lo, hi);
       if (cells > kHugeCells) {
         large_.push_back(i);  // tested by every query
       } else if (cells > kLargeCells) {
         // A long sliver across many cells, such as the flat underside's:
         // only the cells it passes through, those whose centre lies within
         // half a cell's diagonal of it.
-        const double reach = 0.8660254037844387 * cell_mm_;
-        for_cells(lo, hi, [&](std::uint64_t key, const glm::dvec3& centre) {
-          const glm::dvec3 d =
-              closest_point_on_triangle(centre, a, b, c) - centre;
-          if (glm::dot(d, d) <= reach * reach) cells_[key].push_back(i);
-        });
+        const double reach = 0.8660254037844387 * grid_.cell_mm();
+        grid_.for_each(
+            lo, hi, [&](std::uint64_t key, const glm::dvec3& centre) {
+              const glm::dvec3 d =
+                  closest_point_on_triangle(centre, a, b, c) - centre;
+              if (glm::dot(d, d) <= reach * reach) cells_[key].push_back(i);
+            });
       } else {
-        for_cells(lo, hi, [&](std::uint64_t key) { cells_[key].push_back(i); });
+        grid_.for_each(lo, hi, [&](std::uint64_t key, const glm::dvec3&) {
+          cells_[key].push_back(i);
+        });
       }
     }
   }
@@ -97,7 +101,7 @@ class SurfaceDistance {
     // nearest of all. Most points lie on or near the surface and stop at
     // the first cube, where the whole limit's cube would visit thousands
     // of cells.
-    double reach = std::min(limit_mm, cell_mm_ / 4.0);
+    double reach = std::min(limit_mm, grid_.cell_mm() / 4.0);
     double best = limit_mm * limit_mm;
     for (;;) {
       ++stamp_;
@@ -114,10 +118,11 @@ class SurfaceDistance {
         }
       };
       test(large_);
-      for_cells(p - reach, p + reach, [&](std::uint64_t key) {
-        const auto it = cells_.find(key);
-        if (it != cells_.end()) test(it->second);
-      });
+      grid_.for_each(p - reach, p + reach,
+                     [&](std::uint64_t key, const glm::dvec3&) {
+                       const auto it = cells_.find(key);
+                       if (it != cells_.end()) test(it->second);
+                     });
       if (best <= reach * reach || reach >= limit_mm) break;
       reach = std::min(limit_mm, 2.0 * reach);
     }
@@ -152,11 +157,12 @@ class SurfaceDistance {
       }
     };
     test(large_);
-    for_cells(p - distance_mm, p + distance_mm, [&](std::uint64_t key) {
-      if (found) return;
-      const auto it = cells_.find(key);
-      if (it != cells_.end()) test(it->second);
-    });
+    grid_.for_each(p - distance_mm, p + distance_mm,
+                   [&](std::uint64_t key, const glm::dvec3&) {
+                     if (found) return;
+                     const auto it = cells_.find(key);
+                     if (it != cells_.end()) test(it->second);
+                   });
     return found;
   }
 
@@ -164,35 +170,8 @@ class SurfaceDistance {
   static constexpr double kLargeCells = 512.0;
   static constexpr double kHugeCells = double(1 << 22);
 
-  double cell_count(const glm::dvec3& lo, const glm::dvec3& hi) const {
-    const glm::dvec3 n = glm::floor(hi / cell_mm_) - glm::floor(lo / cell_mm_);
-    return (n.x + 1.0) * (n.y + 1.0) * (n.z + 1.0);
-  }
-
-  // Calls visit(key) or visit(key, centre) for every cell of the box.
-  template <typename Visit>
-  void for_cells(const glm::dvec3& lo, const glm::dvec3& hi, Visit visit) {
-    const glm::ivec3 a(glm::floor(lo / cell_mm_));
-    const glm::ivec3 b(glm::floor(hi / cell_mm_));
-    constexpr std::uint64_t mask = (1u << 21) - 1;
-    for (int x = a.x; x <= b.x; ++x) {
-      for (int y = a.y; y <= b.y; ++y) {
-        for (int z = a.z; z <= b.z; ++z) {
-          const std::uint64_t key = (std::uint64_t(x) & mask) |
-                                    ((std::uint64_t(y) & mask) << 21) |
-                                    ((std::uint64_t(z) & mask) << 42);
-          if constexpr (std::is_invocable_v<Visit, std::uint64_t>) {
-            visit(key);
-          } else {
-            visit(key, (glm::dvec3(x, y, z) + 0.5) * cell_mm_);
-          }
-        }
-      }
-    }
-  }
-
   const TriangleMesh& mesh_;
-  double cell_mm_ = 1.0;
+  CellGrid grid_;
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
   std::vector<std::uint32_t> large_;
   std::vector<std::uint32_t> seen_;

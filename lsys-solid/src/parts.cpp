@@ -342,10 +342,12 @@ class PartBuilder {
     for (const std::int32_t o : j.outgoing) end_of(stretch_out(o), 1.0);
     // A part has one colour: where colours meet, the union joins the tubes
     // (and --multi-material gives each colour its own volume).
-    for (const std::vector<std::int32_t>& stretch : j.stretches) {
-      for (const std::int32_t i : stretch) {
-        if (options_.split_colors && seg(i).color != seg(j.incoming).color)
-          return;
+    if (options_.split_colors) {
+      const int color = seg(j.incoming).color;
+      for (const std::vector<std::int32_t>& stretch : j.stretches) {
+        for (const std::int32_t i : stretch) {
+          if (seg(i).color != color) return;
+        }
       }
     }
     const std::size_t n = dirs.size();

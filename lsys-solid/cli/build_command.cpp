@@ -52,9 +52,11 @@ void print_report(const SolidReport& r, bool united) {
   if (united) {
     fmt::print(
         "union: {} booleans ({} rounded to doubles), {} joined without a "
-        "boolean, {} retried, {} cavities filled\n",
+        "boolean, {} retried, {} cavities filled; {} points inside the "
+        "parts found inside it\n",
         r.union_stats.booleans, r.union_stats.rounded,
-        r.union_stats.concatenations, r.union_stats.retries, r.cavities_filled);
+        r.union_stats.concatenations, r.union_stats.retries, r.cavities_filled,
+        r.witnesses_checked);
   }
   if (r.placement.lies_flat && r.placement.cut_refused) {
     fmt::print(
@@ -86,10 +88,10 @@ void print_report(const SolidReport& r, bool united) {
           "decimation: could not reach --max-triangles without breaking the "
           "mesh\n");
     }
-  } else if (d.triangles_before > 0) {
+  } else if (!r.decimation_discarded.empty()) {
     fmt::print(
-        "decimation: its result failed the check and was not used (please "
-        "report this)\n");
+        "decimation: its result {} and was not used (please report this)\n",
+        r.decimation_discarded);
   }
   fmt::print("triangles: {}\n", v.triangles);
   fmt::print("volume: {:.1f} mm³\n", v.volume_mm3);
@@ -100,9 +102,10 @@ void print_report(const SolidReport& r, bool united) {
   if (united) {
     fmt::print(
         "rounding: {} pass{}, {} slivers removed, {} intersecting faces "
-        "rebuilt\n",
+        "rebuilt; volume changed by {:+.4f} mm³\n",
         r.rounding.passes, r.rounding.passes == 1 ? "" : "es",
-        r.rounding.slivers_removed, r.rounding.faces_rebuilt);
+        r.rounding.slivers_removed, r.rounding.faces_rebuilt,
+        r.rounding.volume_change_mm3);
   }
   fmt::print(
       "time: skeleton {:.2f} s, parts {:.2f} s, union {:.2f} s, rounding "

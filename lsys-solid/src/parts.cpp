@@ -23,11 +23,14 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
+#include <map>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <unordered_map>
 
 #include "cgal/junction_geometry.hpp"
+#include "cgal/plate_geometry.hpp"
 #include "union_find.hpp"
 
 namespace lsolid {
@@ -48,6 +51,11 @@ constexpr double kJunctionMinSpread = 1e-3;  // 1 - cos of the closest pair
 constexpr int kMaxRounds = 8;
 constexpr double kOnAxis = 0.1;  // of the stem radius: a leaf starts there
 constexpr double kStraight = 1.0 - 1e-12;  // cos of a bend too small to see
+// Leaf polygons within this fraction of the model's size of each other's
+// planes are in one plane: turtle paths that meet again differ by rounding
+// errors of about 1e-15 of the size.
+constexpr double kCoplanar = 1e-9;
+constexpr double kParallel = 1.0 - 1e-9;  // |cos| of parallel leaf normals
 
 glm::dvec3 direction(const lsys::Segment& s) {
   return glm::normalize(s.p1 - s.p0);
@@ -74,6 +82,24 @@ glm::dvec3 transport(const glm::dvec3& v, const glm::dvec3& from,
   const double s = glm::length(axis);
   if (s < 1e-15) return v;  // parallel: chains never bend by 180°
   return rotate(v, axis / s, glm::dot(from, to), s);
+}
+
+// The largest side of the skeleton's box, at least 1 mm.
+double size_of(const lsys::Skeleton& skeleton) {
+  Box box;
+  const auto add = [&](const glm::dvec3& p) {
+    box.min = glm::min(box.min, p);
+    box.max = glm::max(box.max, p);
+  };
+  for (const lsys::Segment& s : skeleton.segments) {
+    add(s.p0);
+    add(s.p1);
+  }
+  for (const lsys::Polygon& polygon : skeleton.polygons) {
+    for (const glm::dvec3& p : polygon.points) add(p);
+  }
+  const glm::dvec3 extent = box.max - box.min;
+  return std::max({1.0, extent.x, extent.y, extent.z});
 }
 
 double bend_deg(const glm::dvec3& a, const glm::dvec3& b) {
@@ -144,7 +170,7 @@ struct Ring {
 class PartBuilder {
  public:
   PartBuilder(const lsys::Skeleton& skeleton, const PartOptions& options)
-      : skeleton_(skeleton), options_(options) {}
+      : skeleton_(skeleton), options_(options), scale_mm_(size_of(skeleton)) {}
 
   PartSet build() {
     choose_continuations();
@@ -196,9 +222,7 @@ class PartBuilder {
     if (!revert.empty()) return revert;
     revert = assemble();
     if (!revert.empty()) return revert;
-    for (std::size_t i = 0; i < skeleton_.polygons.size(); ++i) {
-      add_plate(skeleton_.polygons[i], i);
-    }
+    add_plates();
     return {};
   }
 
@@ -982,25 +1006,167 @@ class PartBuilder {
     return mesh;
   }
 
-  void add_plate(const lsys::Polygon& polygon, std::size_t index) {
-    std::vector<glm::dvec3> points = without_collinear(polygon.points);
+  // A polygon ready to become a plate: its outline without collinear
+  // points and its unit (Newell) normal.
+  struct Outline {
+    std::vector<glm::dvec3> points;
+    glm::dvec3 normal{0.0};
+    double area = 0.0;
+    Box box;
+  };
+
+  std::optional<Outline> outline(const lsys::Polygon& polygon) const {
+    Outline out{.points = without_collinear(polygon.points)};
     glm::dvec3 newell(0.0);
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      newell += glm::cross(points[i], points[(i + 1) % points.size()]);
+    for (std::size_t i = 0; i < out.points.size(); ++i) {
+      newell +=
+          glm::cross(out.points[i], out.points[(i + 1) % out.points.size()]);
+      out.box.min = glm::min(out.box.min, out.points[i]);
+      out.box.max = glm::max(out.box.max, out.points[i]);
     }
-    const double area = glm::length(newell) / 2.0;
+    out.area = glm::length(newell) / 2.0;
     const double thickness = options_.wall_mm;
-    if (points.size() < 3 || area < 1e-6 * thickness * thickness) {
-      ++set_.skipped_polygons;
-      return;
+    if (out.points.size() < 3 || out.area < 1e-6 * thickness * thickness) {
+      return std::nullopt;
     }
-    const glm::dvec3 n = newell / (2.0 * area);
-    const std::vector<std::array<std::uint32_t, 3>> faces =
-        triangulate(points, n);
-    if (faces.empty()) {  // the outline crosses itself: no plate to make
-      ++set_.skipped_polygons;
-      return;
+    out.normal = newell / (2.0 * out.area);
+    return out;
+  }
+
+  // Whether two outlines lie in one plane (every point of each within
+  // kCoplanar of the other's plane, normals parallel either way) and their
+  // boxes meet, so that their plates would meet face on face.
+  [[nodiscard]] bool share_plane(const Outline& a, const Outline& b) const {
+    const double reach = kCoplanar * scale_mm_;
+    for (int k = 0; k < 3; ++k) {
+      if (a.box.min[k] > b.box.max[k] + reach ||
+          b.box.min[k] > a.box.max[k] + reach) {
+        return false;
+      }
     }
+    if (std::fabs(glm::dot(a.normal, b.normal)) < kParallel) return false;
+    const auto within = [&](const Outline& from, const Outline& plane) {
+      for (const glm::dvec3& p : from.points) {
+        if (std::fabs(glm::dot(p - plane.points[0], plane.normal)) > reach)
+          return false;
+      }
+      return true;
+    };
+    return within(a, b) && within(b, a);
+  }
+
+  // Leaf polygons that lie in one plane and overlap or share edges (a fan
+  // of triangles, layered petals) are united in that plane and each region
+  // of the union becomes one plate (plate_cgal.cpp says why); the others
+  // become a plate each.
+  void add_plates() {
+    const auto& polygons = skeleton_.polygons;
+    std::vector<std::optional<Outline>> outlines;
+    outlines.reserve(polygons.size());
+    for (const lsys::Polygon& polygon : polygons) {
+      outlines.push_back(outline(polygon));
+    }
+    // Candidate pairs by sweeping the boxes along x.
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0; i < outlines.size(); ++i) {
+      if (outlines[i]) order.push_back(i);
+    }
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return outlines[a]->box.min.x < outlines[b]->box.min.x ||
+             (outlines[a]->box.min.x == outlines[b]->box.min.x && a < b);
+    });
+    UnionFind groups(polygons.size());
+    const double reach = kCoplanar * scale_mm_;
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      const Outline& a = *outlines[order[k]];
+      for (std::size_t m = k + 1; m < order.size(); ++m) {
+        const Outline& b = *outlines[order[m]];
+        if (b.box.min.x > a.box.max.x + reach) break;
+        const bool same_color =
+            !options_.split_colors ||
+            polygons[order[k]].color == polygons[order[m]].color;
+        if (same_color && share_plane(a, b)) groups.join(order[k], order[m]);
+      }
+    }
+    std::map<std::size_t, std::vector<std::size_t>> members;
+    for (std::size_t i = 0; i < polygons.size(); ++i) {
+      if (!outlines[i]) {
+        ++set_.skipped_polygons;
+        continue;
+      }
+      members[groups.find(i)].push_back(i);
+    }
+    // In order of each group's first polygon, for reproducible parts.
+    std::vector<std::vector<std::size_t>> ordered;
+    for (auto& [root, list] : members) ordered.push_back(std::move(list));
+    std::sort(ordered.begin(), ordered.end(),
+              [](const auto& a, const auto& b) { return a[0] < b[0]; });
+    for (const std::vector<std::size_t>& group : ordered) {
+      if (group.size() == 1 || !add_united_plates(group, outlines)) {
+        for (const std::size_t i : group) add_plate(*outlines[i], i);
+      }
+      for (const std::size_t i : group) add_tip_joint(polygons[i]);
+    }
+  }
+
+  // The plates of the union of coplanar polygons, in the plane of the
+  // largest. False (and nothing added) if the union cannot be made.
+  bool add_united_plates(const std::vector<std::size_t>& group,
+                         const std::vector<std::optional<Outline>>& outlines) {
+    std::size_t largest = group[0];
+    for (const std::size_t i : group) {
+      if (outlines[i]->area > outlines[largest]->area) largest = i;
+    }
+    const glm::dvec3 n = outlines[largest]->normal;
+    const glm::dvec3 origin = outlines[largest]->points[0];
+    const glm::dvec3 u = any_perpendicular(n);
+    const glm::dvec3 w = glm::cross(n, u);
+    std::vector<std::vector<glm::dvec2>> flat;
+    for (const std::size_t i : group) {
+      std::vector<glm::dvec2> points;
+      for (const glm::dvec3& p : outlines[i]->points) {
+        points.emplace_back(glm::dot(p - origin, u), glm::dot(p - origin, w));
+      }
+      flat.push_back(std::move(points));
+    }
+    const std::optional<std::vector<PlanarRegion>> regions =
+        polygon_union(flat);
+    if (!regions) return false;
+    const std::string label = polygon_list(group);
+    for (const PlanarRegion& region : *regions) {
+      std::vector<glm::dvec3> points;
+      for (const glm::dvec2& p : region.points) {
+        points.push_back(origin + u * p.x + w * p.y);
+      }
+      set_.parts.push_back(
+          Part{plate(points, n, region.rings, region.triangles),
+               "leaf plate of " + label, skeleton_.polygons[group[0]].color});
+      ++set_.plates;
+    }
+    return true;
+  }
+
+  static std::string polygon_list(const std::vector<std::size_t>& group) {
+    if (group.size() <= 3) {
+      std::string out = "polygons " + std::to_string(group[0]);
+      for (std::size_t k = 1; k < group.size(); ++k) {
+        out +=
+            (k + 1 == group.size() ? " and " : ", ") + std::to_string(group[k]);
+      }
+      return out;
+    }
+    return fmt::format("polygons {}, {} and {} more, united in their plane",
+                       group[0], group[1], group.size() - 2);
+  }
+
+  // A plate of wall thickness: the region offset by half the wall to each
+  // side of its plane, walled along its rings (outer counter-clockwise and
+  // holes clockwise seen from +n, triangles counter-clockwise).
+  TriangleMesh plate(
+      const std::vector<glm::dvec3>& points, const glm::dvec3& n,
+      const std::vector<std::vector<std::uint32_t>>& rings,
+      const std::vector<std::array<std::uint32_t, 3>>& faces) const {
+    const double thickness = options_.wall_mm;
     const auto count = static_cast<std::uint32_t>(points.size());
     TriangleMesh mesh;
     for (const glm::dvec3& p : points)
@@ -1011,28 +1177,47 @@ class PartBuilder {
       mesh.triangles.push_back({f[0] + count, f[1] + count, f[2] + count});
       mesh.triangles.push_back({f[0], f[2], f[1]});
     }
-    for (std::uint32_t i = 0; i < count; ++i) {
-      const std::uint32_t j = (i + 1) % count;
-      mesh.triangles.push_back({i, j, j + count});
-      mesh.triangles.push_back({i, j + count, i + count});
-    }
-    set_.parts.push_back(Part{std::move(mesh),
-                              fmt::format("leaf plate of polygon {}", index),
-                              polygon.color});
-    ++set_.plates;
-    // A plate that starts on its stem's axis, where the stem goes on, cuts
-    // through the tube and fuses with it in the union. At a tip the plate
-    // would meet the tube's cap face on: a joint encloses that corner.
-    if (polygon.parent >= 0) {
-      const lsys::Segment& stem = seg(polygon.parent);
-      const double stem_radius = node_radius(polygon.parent);
-      const double from_end = glm::length(polygon.points.front() - stem.p1);
-      const auto i = static_cast<std::size_t>(polygon.parent);
-      const bool goes_on = continuation_[i] >= 0 || end_junction_[i] >= 0;
-      if (from_end <= stem_radius &&
-          !(goes_on && from_end <= kOnAxis * stem_radius)) {
-        add_joint(stem.p1, std::max(stem_radius, 0.75 * thickness), stem.color);
+    for (const std::vector<std::uint32_t>& ring : rings) {
+      for (std::size_t k = 0; k < ring.size(); ++k) {
+        const std::uint32_t i = ring[k];
+        const std::uint32_t j = ring[(k + 1) % ring.size()];
+        mesh.triangles.push_back({i, j, j + count});
+        mesh.triangles.push_back({i, j + count, i + count});
       }
+    }
+    return mesh;
+  }
+
+  void add_plate(const Outline& outline, std::size_t index) {
+    const std::vector<std::array<std::uint32_t, 3>> faces =
+        triangulate(outline.points, outline.normal);
+    if (faces.empty()) {  // the outline crosses itself: no plate to make
+      ++set_.skipped_polygons;
+      return;
+    }
+    std::vector<std::uint32_t> ring(outline.points.size());
+    for (std::uint32_t i = 0; i < ring.size(); ++i) ring[i] = i;
+    set_.parts.push_back(
+        Part{plate(outline.points, outline.normal, {ring}, faces),
+             fmt::format("leaf plate of polygon {}", index),
+             skeleton_.polygons[index].color});
+    ++set_.plates;
+  }
+
+  // A plate that starts on its stem's axis, where the stem goes on, cuts
+  // through the tube and fuses with it in the union. At a tip the plate
+  // would meet the tube's cap face on: a joint encloses that corner.
+  void add_tip_joint(const lsys::Polygon& polygon) {
+    if (polygon.parent < 0) return;
+    const lsys::Segment& stem = seg(polygon.parent);
+    const double stem_radius = node_radius(polygon.parent);
+    const double from_end = glm::length(polygon.points.front() - stem.p1);
+    const auto i = static_cast<std::size_t>(polygon.parent);
+    const bool goes_on = continuation_[i] >= 0 || end_junction_[i] >= 0;
+    if (from_end <= stem_radius &&
+        !(goes_on && from_end <= kOnAxis * stem_radius)) {
+      add_joint(stem.p1, std::max(stem_radius, 0.75 * options_.wall_mm),
+                stem.color);
     }
   }
 
@@ -1116,6 +1301,7 @@ class PartBuilder {
 
   const lsys::Skeleton& skeleton_;
   PartOptions options_;
+  double scale_mm_;  // the skeleton's largest extent, at least 1 mm
   std::vector<std::int32_t> continuation_;
   std::vector<bool> is_continuation_;
   std::vector<Junction> junctions_;

@@ -13,6 +13,7 @@
 
 #include "lsolid/boolean.hpp"
 #include "lsolid/colors.hpp"
+#include "lsolid/containment.hpp"
 #include "lsolid/cut.hpp"
 #include "lsolid/decimate.hpp"
 #include "lsolid/errors.hpp"
@@ -120,6 +121,108 @@ void cut_underside(TriangleMesh& mesh, Placement& placement,
   mesh = std::move(cut);
 }
 
+// How far below a part's surface a witness must lie to be required inside
+// the rounded union: rounding moves points by far less (slivers under
+// 1e-4 mm are collapsed).
+constexpr double kRoundingDepthMm = 1e-3;
+// The union's volume may fall short of its largest part's by rounding only.
+constexpr double kVolumeSlack = 1e-5;
+
+// What the union must keep of its parts (see containment.hpp).
+struct PartsKept {
+  std::vector<Witness> witnesses;
+  std::vector<std::string> labels;
+  double largest_mm3 = 0.0;
+  std::string largest;
+};
+
+PartsKept parts_kept(const std::vector<Part>& parts) {
+  PartsKept kept{.witnesses = witnesses(parts)};
+  for (const Part& part : parts) {
+    kept.labels.push_back(part.label);
+    const double volume = signed_volume(part.mesh);
+    if (volume > kept.largest_mm3) {
+      kept.largest_mm3 = volume;
+      kept.largest = part.label;
+    }
+  }
+  return kept;
+}
+
+// The parts that `outside` names, for a message.
+std::string lost_parts(const std::vector<Witness>& outside,
+                       const PartsKept& kept) {
+  std::vector<std::size_t> parts;
+  for (const Witness& w : outside) {
+    if (std::find(parts.begin(), parts.end(), w.part) == parts.end()) {
+      parts.push_back(w.part);
+    }
+  }
+  std::string out;
+  const std::size_t shown = std::min<std::size_t>(parts.size(), 3);
+  for (std::size_t i = 0; i < shown; ++i) {
+    const auto w =
+        std::find_if(outside.begin(), outside.end(),
+                     [&](const Witness& x) { return x.part == parts[i]; });
+    out += fmt::format(
+        "{}{} (the point ({:.3f}, {:.3f}, {:.3f}) mm, {:.2f} mm "
+        "inside it, is outside the result)",
+        i == 0 ? "" : "; ", kept.labels[parts[i]], w->point.x, w->point.y,
+        w->point.z, w->depth_mm);
+  }
+  if (parts.size() > shown) {
+    out += fmt::format(" and {} more parts", parts.size() - shown);
+  }
+  return out;
+}
+
+// The union's invariant, checked on the rounded union before anything is
+// cut off or decimated: every part's witnesses lie inside it, and it holds
+// at least the largest part's volume. A union that lost geometry is an
+// error, never a printable model.
+// @throws GeometryError naming the parts lost.
+void check_union_kept(const TriangleMesh& mesh, const PartsKept& kept,
+                      SolidReport& report) {
+  const std::vector<Witness> outside =
+      witnesses_outside(mesh, kept.witnesses, kRoundingDepthMm);
+  report.witnesses_checked = static_cast<std::size_t>(std::count_if(
+      kept.witnesses.begin(), kept.witnesses.end(),
+      [](const Witness& w) { return w.depth_mm >= kRoundingDepthMm; }));
+  if (!outside.empty()) {
+    throw GeometryError(
+        "the union lost part of the model (a bug in lsolid; please report "
+        "it with this file): " +
+        lost_parts(outside, kept));
+  }
+  const double volume = signed_volume(mesh);
+  if (volume < kept.largest_mm3 * (1.0 - kVolumeSlack)) {
+    throw GeometryError(fmt::format(
+        "the union lost part of the model (a bug in lsolid; please report it "
+        "with this file): its volume, {:.3f} mm³, is less than that of {}, "
+        "{:.3f} mm³",
+        volume, kept.largest, kept.largest_mm3));
+  }
+}
+
+// Whether decimation moved the surface past a witness that the union kept.
+// Witnesses count as deep as they lie above the bed once a flat-lying
+// model's underside is cut, and need only lie as deep as the surface may
+// have moved (the tolerance, or the deviation measured if larger).
+bool lost_in_decimation(const Decimated& decimated, const PartsKept& kept,
+                        const SolidOptions& options,
+                        const SolidReport& report) {
+  std::vector<Witness> moved;
+  for (Witness w : kept.witnesses) {
+    w.point.z -= report.placement.cut_z_mm;
+    w.depth_mm = std::min(w.depth_mm, w.point.z);
+    if (w.depth_mm > 0.0) moved.push_back(w);
+  }
+  const double moved_mm =
+      std::max(options.print.tolerance_mm, decimated.stats.max_deviation_mm);
+  return !witnesses_outside(decimated.mesh, moved, moved_mm + kRoundingDepthMm)
+              .empty();
+}
+
 // The union of the parts, rounded to the file's precision, its underside
 // cut flat if it lies flat (the cut after the union: cut part by part, the
 // coplanar caps made the union three times as slow on ABOP fig. 1.24a, and
@@ -129,6 +232,8 @@ void unite_and_finish(std::vector<Part> parts, const SolidOptions& options,
                       SolidReport& report, TriangleMesh& mesh, Stopwatch& clock,
                       const Progress& tell) {
   tell("union", 0.0);
+  PartsKept kept;
+  if (options.unite) kept = parts_kept(parts);
   if (options.unite) {
     UnionResult united = union_parts(std::move(parts),
                                      [&](double done) { tell("union", done); });
@@ -143,6 +248,7 @@ void unite_and_finish(std::vector<Part> parts, const SolidOptions& options,
   if (options.unite) {
     mesh = round_and_repair(mesh, options.float_coordinates, report.rounding);
     report.cavities_filled += remove_cavities(mesh);
+    check_union_kept(mesh, kept, report);
     if (report.placement.lies_flat && report.placement.cut_z_mm > 0.0) {
       cut_underside(mesh, report.placement, options, report);
     }
@@ -172,6 +278,12 @@ void unite_and_finish(std::vector<Part> parts, const SolidOptions& options,
     // broken one.
     if (!decimated.mesh.triangles.empty()) {
       report.validation = validate(decimated.mesh);
+      if (!report.validation.is_printable()) {
+        report.decimation_discarded = "failed the check";
+      } else if (lost_in_decimation(decimated, kept, options, report)) {
+        report.decimation_discarded = "lost part of the model";
+        report.validation = ValidationReport{};
+      }
     }
     if (report.validation.is_printable()) {
       mesh = std::move(decimated.mesh);

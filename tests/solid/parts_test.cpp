@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -181,6 +182,81 @@ TEST(Parts, LetsALeafCutThroughAStemThatGoesOn) {
   EXPECT_EQ(parts.joints, 0U);
   EXPECT_EQ(parts.plates, 1U);
   expect_printable(union_parts(parts.parts).mesh);
+}
+
+lsys::Polygon polygon(std::vector<glm::dvec3> points, int color = 0) {
+  lsys::Polygon p;
+  p.points = std::move(points);
+  p.color = color;
+  return p;
+}
+
+TEST(Parts, UnitesAFanOfCoplanarTrianglesIntoOnePlate) {
+  // ABOP fig. 5.5's way of drawing a leaf: triangles sharing the base and
+  // an edge with the next one, here a half disc of radius 5 in y = 0.
+  lsys::Skeleton s;
+  constexpr int kBlades = 8;
+  const auto rim = [](int k) {
+    const double a = std::numbers::pi * k / kBlades;
+    return glm::dvec3(5 * std::cos(a), 0, 5 * std::sin(a));
+  };
+  double area = 0.0;
+  for (int k = 0; k < kBlades; ++k) {
+    s.polygons.push_back(polygon({{0, 0, 0}, rim(k), rim(k + 1)}));
+    area += 0.5 * 25 * std::sin(std::numbers::pi / kBlades);
+  }
+  const PartSet parts = build_parts(s, {.wall_mm = 0.8});
+  ASSERT_EQ(parts.plates, 1U);
+  ASSERT_EQ(parts.parts.size(), 1U);
+  EXPECT_NE(parts.parts[0].label.find("polygons 0, 1 and 6 more"),
+            std::string::npos)
+      << parts.parts[0].label;
+  expect_printable(parts.parts[0].mesh);
+  EXPECT_NEAR(signed_volume(parts.parts[0].mesh), area * 0.8, 1e-9);
+}
+
+TEST(Parts, UnitesOverlappingCoplanarPolygonsAndKeepsApartTheRest) {
+  lsys::Skeleton s;
+  // Two squares overlapping by a quarter, a third far away in their
+  // plane, and a fourth overlapping the first but in another plane.
+  s.polygons = {polygon({{0, 0, 0}, {4, 0, 0}, {4, 0, 4}, {0, 0, 4}}),
+                polygon({{2, 0, 2}, {6, 0, 2}, {6, 0, 6}, {2, 0, 6}}),
+                polygon({{20, 0, 0}, {24, 0, 0}, {24, 0, 4}, {20, 0, 4}}),
+                polygon({{1, -2, 1}, {1, 2, 1}, {1, 2, 3}, {1, -2, 3}})};
+  const PartSet parts = build_parts(s, {.wall_mm = 0.5});
+  ASSERT_EQ(parts.plates, 3U);
+  std::vector<double> volumes;
+  for (const Part& p : parts.parts) {
+    expect_printable(p.mesh);
+    volumes.push_back(signed_volume(p.mesh));
+  }
+  std::sort(volumes.begin(), volumes.end());
+  EXPECT_NEAR(volumes[0], 8 * 0.5, 1e-9);         // the crossing one
+  EXPECT_NEAR(volumes[1], 16 * 0.5, 1e-9);        // the far one
+  EXPECT_NEAR(volumes[2], (32 - 4) * 0.5, 1e-9);  // the two united
+}
+
+TEST(Parts, UnitesCoplanarPolygonsAroundAHole) {
+  lsys::Skeleton s;
+  // Four bars framing a 2 x 2 hole, each overlapping the next at a corner.
+  s.polygons = {polygon({{0, 0, 0}, {6, 0, 0}, {6, 0, 2}, {0, 0, 2}}),
+                polygon({{4, 0, 0}, {6, 0, 0}, {6, 0, 6}, {4, 0, 6}}),
+                polygon({{0, 0, 4}, {6, 0, 4}, {6, 0, 6}, {0, 0, 6}}),
+                polygon({{0, 0, 0}, {2, 0, 0}, {2, 0, 6}, {0, 0, 6}})};
+  const PartSet parts = build_parts(s, {.wall_mm = 1.0});
+  ASSERT_EQ(parts.plates, 1U);
+  expect_printable(parts.parts[0].mesh);
+  const ValidationReport r = validate(parts.parts[0].mesh);
+  EXPECT_EQ(r.genus, 1);
+  EXPECT_NEAR(r.volume_mm3, 36.0 - 4.0, 1e-9);
+}
+
+TEST(Parts, KeepsCoplanarPolygonsOfTwoColoursApartWhenSplittingColours) {
+  lsys::Skeleton s;
+  s.polygons = {polygon({{0, 0, 0}, {4, 0, 0}, {4, 0, 4}, {0, 0, 4}}, 1),
+                polygon({{2, 0, 2}, {6, 0, 2}, {6, 0, 6}, {2, 0, 6}}, 2)};
+  EXPECT_EQ(build_parts(s, {.split_colors = true}).plates, 2U);
+  EXPECT_EQ(build_parts(s, {.split_colors = false}).plates, 1U);
 }
 
 }  // namespace

@@ -253,6 +253,45 @@ TEST(Solid, ReadsPrintSettingsFromTheFileUnlessTheCommandLineGivesThem) {
   }
 }
 
+// ABOP fig. 5.5's cordate leaf as a published file draws it: a fan of 22
+// coplanar triangles on shared edges. Once the plates vanished in the
+// union (530 mm³ left, "printable", 8 shells).
+constexpr const char* kCordateFan =
+    "delta=10\nwidth: 0.5\nderivation length: 12\n"
+    "axiom: !(0.05)F(0.1)\\(30)&(30)FFFFF!(0.045)[A][B]\n"
+    "p1: A -> [[+A{.C.]GC.}]\np2: B -> [[-B{.C.]GC.}]\np3: C -> GC\n";
+
+// Lparser's cordate leaf (its header as settings, its ' dropped): four
+// leaves of 14 overlapping coplanar polygons each.
+constexpr const char* kLparserLeaf =
+    "n = 10\nangle: 10\nwidth: 0.1\n"
+    "[|FFFFFFFFFFF]P>(90)P>(90)P>(90)P\nP=[&(10)G[ccA][ccB][a][b]]\n"
+    "G=tFtFtFtFtFtFtFtFtFtFtFtFtF\nA=[+A{.].C.}\nB=[-B{.].C.}\nC=tfC\n"
+    "a=[+a]d\nb=[-b]d\nd=tFd\naliases: > = /  < = \\  c = '\n";
+
+TEST(Solid, KeepsALeafDrawnAsAFanOfCoplanarTriangles) {
+  const Solid s =
+      build_solid(parse(kCordateFan), {.print = {.base = Base::None}});
+  expect_printable(s.mesh, 1);
+  EXPECT_EQ(s.report.polygons, 22U);
+  EXPECT_EQ(s.report.plates, 1U);  // the fan, united in its plane
+  EXPECT_GT(s.report.witnesses_checked, 40U);
+  // manifold-3d 3.5.4 unites the same parts (`lsolid --no-union`) into
+  // 3607.1 mm³.
+  EXPECT_NEAR(s.report.validation.volume_mm3, 3607.1, 0.005 * 3607.1);
+}
+
+TEST(Solid, BuildsLeavesOfOverlappingCoplanarPolygons) {
+  const Solid s =
+      build_solid(parse(kLparserLeaf), {.print = {.base = Base::None}});
+  expect_printable(s.mesh, 1);
+  EXPECT_EQ(s.report.segments, 351U);
+  EXPECT_EQ(s.report.plates, 4U);
+  EXPECT_TRUE(s.report.decimated);
+  // manifold-3d 3.5.4: 1023.4 mm³ for the same parts.
+  EXPECT_NEAR(s.report.validation.volume_mm3, 1023.4, 0.005 * 1023.4);
+}
+
 TEST(Solid, RefusesAModelThatDrawsNothing) {
   EXPECT_THROW((void)build_solid(parse("\u03C9: A+B")), GeometryError);
 }

@@ -14,6 +14,9 @@ struct RoundingStats {
   std::size_t slivers_removed =
       0;  ///< almost degenerate faces collapsed or flipped
   std::size_t faces_rebuilt = 0;  ///< self-intersecting faces replaced
+  /// The volume of the result less that of the input, in mm³, summed over
+  /// calls.
+  double volume_change_mm3 = 0.0;
 };
 
 /// Rounds a union's coordinates to what the file will store (floats for STL)

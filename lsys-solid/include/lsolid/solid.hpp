@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -78,7 +79,13 @@ struct SolidReport {
   /// was off, or its result failed validation and was thrown away (then
   /// `decimation` still says what it did).
   bool decimated = false;
+  /// Why a decimated mesh was thrown away ("failed the check", "lost part
+  /// of the model"); empty when it was used or decimation was off.
+  std::string decimation_discarded;
   DecimateStats decimation;
+  /// Points deep inside the parts found inside the union (the union's
+  /// invariant, containment.hpp); a point outside is an error.
+  std::size_t witnesses_checked = 0;
   ValidationReport validation;  ///< of `Solid::mesh`, exactly as returned
   StageSeconds seconds;
 };

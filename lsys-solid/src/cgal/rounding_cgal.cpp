@@ -84,7 +84,9 @@ TriangleMesh round_and_repair(const TriangleMesh& input, bool float_coordinates,
     }
   }
   if (float_coordinates) snap_to_float(mesh);  // what is checked is written
-  return to_triangle_mesh(mesh);
+  TriangleMesh out = to_triangle_mesh(mesh);
+  stats.volume_change_mm3 += signed_volume(out) - signed_volume(input);
+  return out;
 }
 
 }  // namespace lsolid

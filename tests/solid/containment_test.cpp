@@ -1,0 +1,62 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#include "lsolid/containment.hpp"
+
+#include <gtest/gtest.h>
+
+#include "lsolid/boolean.hpp"
+#include "support/mesh_checks.hpp"
+
+namespace lsolid {
+namespace {
+
+using testing::box_mesh;
+
+std::vector<Part> two_boxes() {
+  std::vector<Part> parts;
+  parts.push_back(Part{box_mesh({0, 0, 0}, {10, 10, 2}), "slab"});
+  parts.push_back(Part{box_mesh({8, 8, 1}, {12, 12, 9}), "post"});
+  return parts;
+}
+
+TEST(Containment, FindsPointsDeepInsideEveryPart) {
+  const std::vector<Part> parts = two_boxes();
+  const std::vector<Witness> found = witnesses(parts);
+  std::vector<int> per_part(parts.size(), 0);
+  for (const Witness& w : found) {
+    ASSERT_LT(w.part, parts.size());
+    ++per_part[w.part];
+    const Box b = bounds(parts[w.part].mesh);
+    const glm::dvec3 p = w.point;
+    const double depth =
+        std::min({p.x - b.min.x, b.max.x - p.x, p.y - b.min.y, b.max.y - p.y,
+                  p.z - b.min.z, b.max.z - p.z});
+    EXPECT_GT(depth, 0.0);
+    EXPECT_NEAR(w.depth_mm, depth, 1e-9);
+  }
+  EXPECT_GE(per_part[0], 1);
+  EXPECT_GE(per_part[1], 1);
+}
+
+TEST(Containment, NamesThePartsAUnionLeftOut) {
+  const std::vector<Part> parts = two_boxes();
+  const std::vector<Witness> found = witnesses(parts);
+  const TriangleMesh united = union_parts(parts).mesh;
+  EXPECT_TRUE(witnesses_outside(united, found, 1e-3).empty());
+  // A "union" that lost the post keeps only the slab.
+  const std::vector<Witness> lost =
+      witnesses_outside(parts[0].mesh, found, 1e-3);
+  ASSERT_FALSE(lost.empty());
+  for (const Witness& w : lost) EXPECT_EQ(w.part, 1U);
+  // Points that may have moved out with the surface are not asked for.
+  EXPECT_TRUE(witnesses_outside(parts[0].mesh, found, 100.0).empty());
+}
+
+TEST(Containment, AnEmptyResultLosesEveryPart) {
+  const std::vector<Part> parts = two_boxes();
+  const std::vector<Witness> found = witnesses(parts);
+  EXPECT_EQ(witnesses_outside(TriangleMesh{}, found, 0.0).size(), found.size());
+}
+
+}  // namespace
+}  // namespace lsolid

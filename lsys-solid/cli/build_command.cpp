@@ -20,6 +20,7 @@
 #include "lsolid/solid.hpp"
 #include "lsolid/units.hpp"
 #include "lsys/diagnostic.hpp"
+#include "pieces.hpp"
 
 namespace lsolid::cli {
 namespace {
@@ -117,6 +118,8 @@ void print_report(const SolidReport& r, bool united) {
         "check: printable: closed, manifold, outward, no self-intersections; "
         "{} shell{}, genus {}\n",
         v.shells, v.shells == 1 ? "" : "s", v.genus);
+    const std::string pieces = describe_pieces(v);
+    if (!pieces.empty()) fmt::print("pieces: {}\n", pieces);
   } else {
     fmt::print("check: NOT printable\n");
     for (const std::string& problem : v.problems())
@@ -155,7 +158,7 @@ std::string json_report(const Solid& solid, const OverhangReport& over,
       "\"triangles\": {}, "
       "\"volume_mm3\": {}, "
       "\"bounds\": {{\"min\": {}, \"max\": {}}}, \"printable\": {}, "
-      "\"shells\": {}, \"genus\": {}, \"overhang_mm2\": {}, "
+      "\"shells\": {}, {}, \"genus\": {}, \"overhang_mm2\": {}, "
       "\"needs_supports\": {}, \"fits_bed\": {}, "
       "\"seconds\": {{\"skeleton\": {}, \"parts\": {}, \"union\": {}, "
       "\"rounding\": {}, \"decimation\": {}, \"check\": {}, "
@@ -182,8 +185,8 @@ std::string json_report(const Solid& solid, const OverhangReport& over,
       volumes.empty() ? std::string("null")
                       : fmt::format("[{}]", fmt::join(volumes, ", ")),
       v.triangles, v.volume_mm3, json_point(v.bounds.min),
-      json_point(v.bounds.max), v.is_printable(), v.shells, v.genus,
-      over.area_mm2, over.needs_supports,
+      json_point(v.bounds.max), v.is_printable(), v.shells, json_pieces(v),
+      v.genus, over.area_mm2, over.needs_supports,
       bed ? (fits ? "true" : "false") : "null", r.seconds.skeleton,
       r.seconds.parts, r.seconds.unite, r.seconds.round, r.seconds.decimate,
       r.seconds.check, r.seconds.volumes);
@@ -349,6 +352,21 @@ int run_build(const BuildCommand& command) {
                  "(--force writes it anyway)\n",
                  output.string().c_str());
     return 3;
+  }
+  const std::size_t pieces = solid.report.validation.pieces();
+  if (pieces > 1 && options.unite) {
+    if (command.one_piece) {
+      finish(false);
+      std::fprintf(stderr,
+                   "error: the model is in %zu separate pieces; %s was not "
+                   "written (--one-piece)\n",
+                   pieces, output.string().c_str());
+      return 3;
+    }
+    std::fprintf(stderr,
+                 "warning: the model is in %zu separate pieces, which print "
+                 "as loose parts (--one-piece refuses such a model)\n",
+                 pieces);
   }
   if (!solid.report.validation.is_printable() && options.unite) {
     finish(false);

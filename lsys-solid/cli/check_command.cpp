@@ -13,6 +13,7 @@
 #include "lsolid/errors.hpp"
 #include "lsolid/mesh_io.hpp"
 #include "lsolid/validate.hpp"
+#include "pieces.hpp"
 
 namespace lsolid::cli {
 namespace {
@@ -35,7 +36,7 @@ std::string json_report(const ValidationReport& r) {
       "\"non_manifold_vertices\": {}, \"misoriented_edges\": {}, "
       "\"outward\": {}, \"degenerate_faces\": {}, \"self_intersecting_pairs\": "
       "{}, "
-      "\"shells\": {}, \"genus\": {}, \"volume_mm3\": {}, "
+      "\"shells\": {}, {}, \"genus\": {}, \"volume_mm3\": {}, "
       "\"bounds\": {{\"min\": {}, \"max\": {}}}, \"problems\": [{}]}}\n",
       r.is_printable(), r.triangles, r.vertices, r.boundary_edges == 0,
       r.boundary_edges, r.non_manifold_edges, r.non_manifold_vertices,
@@ -44,12 +45,14 @@ std::string json_report(const ValidationReport& r) {
       r.degenerate_faces,
       optional(r.self_intersections_checked,
                std::to_string(r.self_intersecting_pairs)),
-      r.shells, optional(r.genus >= 0, std::to_string(r.genus)),
+      r.shells, json_pieces(r), optional(r.genus >= 0, std::to_string(r.genus)),
       json_number(r.volume_mm3), json_point(r.bounds.min),
       json_point(r.bounds.max), problems);
 }
 
-std::string text_report(const std::string& file, const ValidationReport& r) {
+// `in_pieces`: --one-piece was asked for and the mesh is not one piece.
+std::string text_report(const std::string& file, const ValidationReport& r,
+                        bool in_pieces) {
   const auto yes = [](bool b) { return b ? "yes" : "no"; };
   std::string out = fmt::format("{}: {} triangles, {} vertices\n", file,
                                 r.triangles, r.vertices);
@@ -76,12 +79,17 @@ std::string text_report(const std::string& file, const ValidationReport& r) {
   out += fmt::format(
       "shells: {}, genus: {}\n", r.shells,
       r.genus >= 0 ? std::to_string(r.genus) : std::string("unknown"));
+  const std::string pieces = describe_pieces(r);
+  out += fmt::format("pieces: {}\n",
+                     pieces.empty() ? fmt::format("{}", r.pieces()) : pieces);
   out += fmt::format("volume: {:.3f} mm³\n", r.volume_mm3);
   const glm::dvec3 size = r.bounds.size();
   out += fmt::format("size: {:.3f} x {:.3f} x {:.3f} mm\n", size.x, size.y,
                      size.z);
-  out += fmt::format("verdict: {}\n",
-                     r.is_printable() ? "printable" : "NOT printable");
+  out +=
+      fmt::format("verdict: {}\n", !r.is_printable() ? "NOT printable"
+                                   : in_pieces ? "NOT one piece (--one-piece)"
+                                               : "printable");
   for (const std::string& p : r.problems()) out += "  " + p + "\n";
   return out;
 }
@@ -168,10 +176,12 @@ int run_check(const CheckCommand& command) {
   if (volumes.size() > 1) return check_volumes(command, volumes);
   const ValidationReport report =
       validate(volumes.empty() ? TriangleMesh() : volumes.front().mesh);
-  const std::string text =
-      command.json ? json_report(report) : text_report(command.file, report);
+  const bool in_pieces = command.one_piece && report.pieces() > 1;
+  const std::string text = command.json
+                               ? json_report(report)
+                               : text_report(command.file, report, in_pieces);
   std::fputs(text.c_str(), stdout);
-  return report.is_printable() ? 0 : 1;
+  return report.is_printable() && !in_pieces ? 0 : 1;
 }
 
 }  // namespace lsolid::cli

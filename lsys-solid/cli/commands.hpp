@@ -93,6 +93,7 @@ struct BuildCommand {
   std::string preview;  ///< a PNG to render the written mesh to, or empty
   std::optional<std::string> bed;  ///< the build volume, `220x220x250mm`
   bool force = false;              ///< write even if it does not fit the bed
+  bool one_piece = false;          ///< refuse a model of separate pieces
   bool quiet = false;              ///< no report (errors still go to stderr)
   bool json = false;               ///< the report as one JSON object
 };
@@ -104,8 +105,10 @@ int run_build(const BuildCommand& command);
 struct CheckCommand {
   std::string file;
   bool json = false;
+  bool one_piece = false;  ///< separate pieces make the verdict "not"
 };
-/// Returns 0 when printable, 1 when not, 2 when unreadable.
+/// Returns 0 when printable (and one piece, with `one_piece`), 1 when not,
+/// 2 when unreadable.
 int run_check(const CheckCommand& command);
 
 }  // namespace lsolid::cli

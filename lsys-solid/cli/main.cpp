@@ -53,6 +53,9 @@ int main(int argc, char** argv) {
   app.add_flag("--force", build.force,
                "write the model even if it does not fit the --bed")
       ->needs(bed);
+  app.add_flag("--one-piece", build.one_piece,
+               "refuse (exit 3, nothing written) a model that falls apart "
+               "into separate pieces");
   app.add_flag("-q,--quiet", build.quiet,
                "print no report (errors still go to standard error)");
   app.add_flag("--json", build.json,
@@ -100,6 +103,9 @@ int main(int argc, char** argv) {
       "2 unreadable)");
   check_app->add_option("MESH", check.file, "the mesh to check")->required();
   check_app->add_flag("--json", check.json, "print the report as JSON");
+  check_app->add_flag("--one-piece", check.one_piece,
+                      "also require the mesh to be one piece (exit 1 if it "
+                      "falls apart into several)");
 
   try {
     app.parse(argc, argv);

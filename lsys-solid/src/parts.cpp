@@ -56,6 +56,7 @@ constexpr double kStraight = 1.0 - 1e-12;  // cos of a bend too small to see
 // errors of about 1e-15 of the size.
 constexpr double kCoplanar = 1e-9;
 constexpr double kParallel = 1.0 - 1e-9;  // |cos| of parallel leaf normals
+constexpr double kPlateMargin = 1.05;     // plate over the thinnest tube
 
 glm::dvec3 direction(const lsys::Segment& s) {
   return glm::normalize(s.p1 - s.p0);
@@ -358,7 +359,7 @@ class PartBuilder {
             {radius, seg(i).start_diameter / 2.0, seg(i).end_diameter / 2.0});
         along += length(seg(i));
       }
-      radii.push_back(radius);
+      radii.push_back(tube_corner_radius(radius, options_.tolerance_mm));
       j.stretches.push_back(std::move(stretch));
       j.stretch_mm.push_back(along);
     };
@@ -570,16 +571,17 @@ class PartBuilder {
   // itself after a path of more than half a turn.
   class RunGrid {
    public:
-    explicit RunGrid(const lsys::Skeleton& skeleton)
-        : segments_(skeleton.segments) {
+    RunGrid(const lsys::Skeleton& skeleton, double tolerance_mm)
+        : segments_(skeleton.segments), tolerance_mm_(tolerance_mm) {
       double longest = 0.0;
       double widest = 0.0;
       for (const lsys::Segment& s : segments_) {
         longest = std::max(longest, glm::length(s.p1 - s.p0));
         widest = std::max({widest, s.start_diameter, s.end_diameter});
       }
-      // Segments closer than the clearance have midpoints in adjacent cells.
-      cell_ = std::max(longest + kClearance * widest, 1e-9);
+      // Segments closer than the clearance have midpoints in adjacent cells
+      // (corners stand out by at most 1 / cos(π/6) of the radius).
+      cell_ = std::max(longest + kClearance * 1.16 * widest, 1e-9);
     }
     void start(std::int32_t first) {
       cells_.clear();
@@ -640,7 +642,8 @@ class PartBuilder {
     }
     double radius(std::int32_t i) const {
       const lsys::Segment& s = segments_[static_cast<std::size_t>(i)];
-      return std::max(s.start_diameter, s.end_diameter) / 2.0;
+      return tube_corner_radius(
+          std::max(s.start_diameter, s.end_diameter) / 2.0, tolerance_mm_);
     }
     Key key(const glm::dvec3& p) const {
       return {static_cast<std::int64_t>(std::floor(p.x / cell_)),
@@ -675,6 +678,7 @@ class PartBuilder {
     }
 
     const std::vector<lsys::Segment>& segments_;
+    double tolerance_mm_;
     double cell_ = 0.0;
     std::unordered_map<Key, std::vector<std::int32_t>, KeyHash> cells_;
     std::unordered_map<std::int32_t, double> path_start_;  // along the run
@@ -724,10 +728,14 @@ class PartBuilder {
                           const glm::dvec3& dir, const glm::dvec3& axis_a,
                           const glm::dvec3* mitre_normal) {
       const glm::dvec3 b = glm::cross(dir, axis_a);
+      // Corners beyond the circle, flat sides on it: a tube is never
+      // thinner than its width (the printer's wall), and tubes whose
+      // circles touch overlap, so the union fuses them.
+      const double corner = radius / std::cos(kPi / m);
       for (int i = 0; i < m; ++i) {
         const double angle = 2.0 * kPi * i / m;
         glm::dvec3 q =
-            radius * (std::cos(angle) * axis_a + std::sin(angle) * b);
+            corner * (std::cos(angle) * axis_a + std::sin(angle) * b);
         if (mitre_normal != nullptr) {
           q -=
               dir * (glm::dot(q, *mitre_normal) / glm::dot(dir, *mitre_normal));
@@ -959,7 +967,8 @@ class PartBuilder {
   // so that it encloses every cap of that radius at the centre.
   TriangleMesh sphere(const glm::dvec3& center, double radius,
                       std::size_t index) {
-    const double needed = radius * kJointMargin;
+    const double needed =
+        tube_corner_radius(radius, options_.tolerance_mm) * kJointMargin;
     const int longitudes =
         std::max(8, tube_sides(needed, options_.tolerance_mm));
     const int latitudes = std::max(4, longitudes / 2);
@@ -1159,14 +1168,22 @@ class PartBuilder {
                        group[0], group[1], group.size() - 2);
   }
 
-  // A plate of wall thickness: the region offset by half the wall to each
-  // side of its plane, walled along its rings (outer counter-clockwise and
-  // holes clockwise seen from +n, triangles counter-clockwise).
+  // Plates are a little thicker than the thinnest tube across its corners:
+  // veins drawn in a leaf at the thinnest width then lie inside it, where
+  // tubes flush with its faces cut them in long slivers (ABOP fig. 5.5's
+  // cordate leaf took 3.5 times as long).
+  double plate_thickness() const {
+    return plate_thickness_mm(options_.wall_mm, options_.tolerance_mm);
+  }
+
+  // A plate: the region offset by half the plate's thickness to each side
+  // of its plane, walled along its rings (outer counter-clockwise and holes
+  // clockwise seen from +n, triangles counter-clockwise).
   TriangleMesh plate(
       const std::vector<glm::dvec3>& points, const glm::dvec3& n,
       const std::vector<std::vector<std::uint32_t>>& rings,
       const std::vector<std::array<std::uint32_t, 3>>& faces) const {
-    const double thickness = options_.wall_mm;
+    const double thickness = plate_thickness();
     const auto count = static_cast<std::uint32_t>(points.size());
     TriangleMesh mesh;
     for (const glm::dvec3& p : points)
@@ -1309,7 +1326,7 @@ class PartBuilder {
   std::vector<std::int32_t> end_junction_;    // per segment, or -1
   // Per segment: the junction whose incoming ring lies in it, or -1.
   std::vector<std::int32_t> incoming_ring_;
-  RunGrid run_{skeleton_};
+  RunGrid run_{skeleton_, options_.tolerance_mm};
   // One round's meshing.
   std::vector<glm::dvec3> pool_;  // the vertices of all pieces
   std::vector<Piece> pieces_;
@@ -1323,9 +1340,19 @@ class PartBuilder {
 }  // namespace
 
 int tube_sides(double radius_mm, double tolerance_mm) {
-  if (tolerance_mm >= radius_mm) return 6;
-  const double step = std::acos(1.0 - tolerance_mm / radius_mm);
+  // The flat sides touch the circle; the corners stand out by
+  // r (1 / cos(π/m) - 1), which must stay within the tolerance.
+  const double step = std::acos(radius_mm / (radius_mm + tolerance_mm));
+  if (!(step > 0.0)) return 128;
   return std::clamp(static_cast<int>(std::ceil(kPi / step)), 6, 128);
+}
+
+double tube_corner_radius(double radius_mm, double tolerance_mm) {
+  return radius_mm / std::cos(kPi / tube_sides(radius_mm, tolerance_mm));
+}
+
+double plate_thickness_mm(double wall_mm, double tolerance_mm) {
+  return 2.0 * kPlateMargin * tube_corner_radius(wall_mm / 2.0, tolerance_mm);
 }
 
 Box bounds(const std::vector<Part>& parts) {

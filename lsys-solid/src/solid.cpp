@@ -21,12 +21,17 @@
 #include "lsolid/rounding.hpp"
 #include "lsolid/scale.hpp"
 #include "lsolid/validate.hpp"
+#include "lsys/diagnostic.hpp"
 
 namespace lsolid {
 namespace {
 
-constexpr int kSizePasses = 4;
-constexpr double kSizeTolerance = 0.002;
+// The size asked for is met to within 0.01% (0.01 mm at 100 mm) in at
+// most this many passes; a size off by more than 1% cannot be met (walls
+// too thick for it) and is refused.
+constexpr int kSizePasses = 8;
+constexpr double kSizeTolerance = 1e-4;
+constexpr double kSizeRefused = 0.01;
 constexpr double kDefaultSizeMm = 100.0;  // as scale_to_print's default
 
 using Progress = std::function<void(std::string_view, double)>;
@@ -193,6 +198,18 @@ void check_union_kept(const TriangleMesh& mesh, const PartsKept& kept,
         "the union lost part of the model (a bug in lsolid; please report "
         "it with this file): " +
         lost_parts(outside, kept));
+  }
+  const std::vector<Shell> fragments =
+      unaccounted_pieces(mesh, kept.witnesses, kRoundingDepthMm);
+  if (!fragments.empty()) {
+    const glm::dvec3 at =
+        (fragments.front().bounds.min + fragments.front().bounds.max) / 2.0;
+    throw GeometryError(fmt::format(
+        "the repair of the union left {} loose fragment{} that no part "
+        "accounts for (a bug in lsolid; please report it with this file): "
+        "the largest {:.3g} mm³ around ({:.3f}, {:.3f}, {:.3f}) mm",
+        fragments.size(), fragments.size() == 1 ? "" : "s",
+        fragments.front().volume_mm3, at.x, at.y, at.z));
   }
   const double volume = signed_volume(mesh);
   if (volume < kept.largest_mm3 * (1.0 - kVolumeSlack)) {
@@ -395,12 +412,17 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   report.seconds.skeleton = clock.lap();
   tell("parts", 0.0);
 
-  // scale_to_print sizes the skeleton with round tubes; mitres, joints and
-  // hulls reach a little beyond, so the parts are measured and the scale
-  // corrected until the size asked for holds within 0.2%.
+  // scale_to_print sizes the skeleton with round tubes; mitres, joints,
+  // hulls and a base disc reach beyond, so the placed parts are measured and
+  // the scale corrected until the size asked for holds (the longest side,
+  // or the height, of everything printed, base included).
   PrintSettings print = options.print;
   ScaledSkeleton scaled;
   PartSet parts;
+  const bool sized = !options.print.scale_mm_per_unit.has_value();
+  const double wanted = options.print.height_mm.value_or(
+      options.print.size_mm.value_or(kDefaultSizeMm));
+  double actual = 0.0;
   for (int pass = 0; pass < kSizePasses; ++pass) {
     scaled = scale_to_print(skeleton, print);
     parts =
@@ -408,17 +430,30 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
                     {.wall_mm = print.wall_mm,
                      .tolerance_mm = print.tolerance_mm,
                      .split_colors = options.colors || options.multi_material});
-    if (options.print.scale_mm_per_unit || parts.parts.empty()) break;
+    report.placement = place_on_bed(
+        parts.parts, options.print.base, options.print.wall_mm,
+        options.print.tolerance_mm,
+        options.unite ? skeleton_plane(scaled.skeleton, print.wall_mm)
+                      : std::nullopt);
+    if (!sized || parts.parts.empty()) break;
     const glm::dvec3 extent = bounds(parts.parts).size();
-    const double actual = options.print.height_mm
-                              ? extent.z
-                              : std::max({extent.x, extent.y, extent.z});
-    const double wanted = options.print.height_mm.value_or(
-        options.print.size_mm.value_or(kDefaultSizeMm));
+    actual = options.print.height_mm ? extent.z
+                                     : std::max({extent.x, extent.y, extent.z});
     if (std::fabs(actual - wanted) <= kSizeTolerance * wanted) break;
     print.scale_mm_per_unit = scaled.mm_per_unit * wanted / actual;
     print.height_mm.reset();
     print.size_mm.reset();
+  }
+  if (sized && !parts.parts.empty() &&
+      std::fabs(actual - wanted) > kSizeRefused * wanted) {
+    const char* what = options.print.height_mm ? "height" : "size";
+    throw lsys::ParseError(lsys::Diagnostic{
+        .file = std::string("--") + what,
+        .message = fmt::format(
+            "a {} of {:.4g} mm cannot be met: with walls of {:.4g} mm the "
+            "model comes out {:.4g} mm (choose a larger {} or a thinner "
+            "--wall)",
+            what, wanted, options.print.wall_mm, actual, what)});
   }
   // Indices of one colour are one material: one volume, one base material.
   for (Part& part : parts.parts) {
@@ -430,11 +465,6 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   report.joints = parts.joints;
   report.plates = parts.plates;
   report.skipped_polygons = parts.skipped_polygons;
-  report.placement = place_on_bed(
-      parts.parts, options.print.base, options.print.wall_mm,
-      options.print.tolerance_mm,
-      options.unite ? skeleton_plane(scaled.skeleton, print.wall_mm)
-                    : std::nullopt);
   report.seconds.parts = clock.lap();
   std::vector<Part> colored;
   if (options.colors || options.multi_material) colored = parts.parts;

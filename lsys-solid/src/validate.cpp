@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <glm/geometric.hpp>
 #include <unordered_map>
 
 #include "cgal/exact_checks.hpp"
@@ -100,6 +101,29 @@ ValidationReport validate(const TriangleMesh& mesh) {
                           static_cast<std::uint32_t>(shell_of_root.size()));
   }
   r.shells = shell_of_root.size();
+  r.shell_list.resize(r.shells);
+  // Volumes are summed about a vertex of each shell rather than the origin,
+  // so that a small shell far out keeps its digits.
+  std::vector<glm::dvec3> origin(r.shells);
+  for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f) {
+    const std::uint32_t index = shell_of_root[shells.find(f)];
+    Shell& shell = r.shell_list[index];
+    const auto& t = mesh.triangles[f];
+    const glm::dvec3& a = mesh.vertices[t[0]];
+    const glm::dvec3& b = mesh.vertices[t[1]];
+    const glm::dvec3& c = mesh.vertices[t[2]];
+    if (shell.triangles++ == 0) origin[index] = a;
+    const glm::dvec3& o = origin[index];
+    shell.volume_mm3 += glm::dot(a - o, glm::cross(b - o, c - o)) / 6.0;
+    for (const glm::dvec3& p : {a, b, c}) {
+      shell.bounds.min = glm::min(shell.bounds.min, p);
+      shell.bounds.max = glm::max(shell.bounds.max, p);
+    }
+  }
+  std::stable_sort(r.shell_list.begin(), r.shell_list.end(),
+                   [](const Shell& x, const Shell& y) {
+                     return x.volume_mm3 > y.volume_mm3;
+                   });
 
   const bool is_edge_manifold = r.non_manifold_edges == 0;
   const bool is_closed_manifold = is_edge_manifold && r.boundary_edges == 0 &&
@@ -134,6 +158,12 @@ ValidationReport validate(const TriangleMesh& mesh) {
   r.orientation_checked = exact.orientation_checked;
   r.is_outward = exact.is_outward;
   return r;
+}
+
+std::size_t ValidationReport::pieces() const noexcept {
+  return static_cast<std::size_t>(
+      std::count_if(shell_list.begin(), shell_list.end(),
+                    [](const Shell& s) { return s.volume_mm3 > 0.0; }));
 }
 
 std::vector<std::string> ValidationReport::problems() const {

@@ -236,6 +236,66 @@ TEST_F(Build, RefusesAModelThatDoesNotFitTheBedUnlessForced) {
   EXPECT_NE(fits.out.find("overhang: "), std::string::npos);
 }
 
+TEST_F(Build, SaysPlainlyWhenTheModelFallsApartAndCanRefuseIt) {
+  // A stem and, 3 units beside it, a loose twig: two pieces.
+  {
+    std::ofstream(dir_ / "apart.ls")
+        << "\u03B4=90\u00B0\nwidth: 0.5\nbase: none\nsize: 50mm\n"
+           "\u03C9: FF[+fff-F]\n";
+  }
+  const auto built = run_command(lsolid() + " apart.ls", dir_);
+  EXPECT_EQ(built.exit_code, 0) << built.err;
+  EXPECT_NE(built.out.find("pieces: 2 separate pieces, which print as loose "
+                           "parts: the largest "),
+            std::string::npos)
+      << built.out;
+  EXPECT_NE(built.out.find(" mm³ around ("), std::string::npos) << built.out;
+  EXPECT_EQ(built.err,
+            "warning: the model is in 2 separate pieces, which print as "
+            "loose parts (--one-piece refuses such a model)\n");
+  const auto check = run_command(lsolid() + " check apart.stl", dir_);
+  EXPECT_EQ(check.exit_code, 0);
+  EXPECT_NE(check.out.find("pieces: 2 separate pieces"), std::string::npos);
+  const auto strict =
+      run_command(lsolid() + " check apart.stl --one-piece", dir_);
+  EXPECT_EQ(strict.exit_code, 1);
+  EXPECT_NE(strict.out.find("verdict: NOT one piece (--one-piece)\n"),
+            std::string::npos)
+      << strict.out;
+  const auto json =
+      run_command(lsolid() + " check apart.stl --json --one-piece", dir_);
+  EXPECT_EQ(json.exit_code, 1);
+  EXPECT_NE(
+      json.out.find("\"pieces\": 2, \"loose_pieces\": [{\"volume_mm3\": "),
+      std::string::npos)
+      << json.out;
+  // Refused at build time: exit 3, nothing written over what was there.
+  const auto refused =
+      run_command(lsolid() + " apart.ls --one-piece -o again.stl", dir_);
+  EXPECT_EQ(refused.exit_code, 3);
+  EXPECT_EQ(refused.err,
+            "error: the model is in 2 separate pieces; again.stl was not "
+            "written (--one-piece)\n");
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "again.stl"));
+  // One piece passes.
+  use_printable("hilbert-cube", "h.ls");
+  EXPECT_EQ(run_command(lsolid() + " h.ls --one-piece", dir_).exit_code, 0);
+  const auto whole = run_command(lsolid() + " check h.stl --one-piece", dir_);
+  EXPECT_EQ(whole.exit_code, 0);
+  EXPECT_NE(whole.out.find("pieces: 1\n"), std::string::npos);
+}
+
+TEST_F(Build, FusesTubesThatTouch) {
+  // Width 1 and a sideways step of 1: the circles of the two tubes touch.
+  {
+    std::ofstream(dir_ / "touch.ls")
+        << "\u03B4=90\u00B0\nwidth: 1\nbase: none\n\u03C9: F[+f-F]\n";
+  }
+  const auto built = run_command(lsolid() + " touch.ls --one-piece", dir_);
+  EXPECT_EQ(built.exit_code, 0) << built.err;
+  EXPECT_NE(built.out.find("1 shell, genus 0"), std::string::npos) << built.out;
+}
+
 TEST_F(Build, IsQuietOrSpeaksJsonWhenAsked) {
   use_printable("hilbert-cube", "h.ls");
   const auto quiet = run_command(lsolid() + " h.ls -q", dir_);
@@ -250,7 +310,8 @@ TEST_F(Build, IsQuietOrSpeaksJsonWhenAsked) {
   EXPECT_NE(json.out.find("\"segments\": 63, \"leaves\": 0, \"tubes\": 1,"),
             std::string::npos)
       << json.out;
-  EXPECT_NE(json.out.find("\"printable\": true, \"shells\": 1, \"genus\": 0,"),
+  EXPECT_NE(json.out.find("\"printable\": true, \"shells\": 1, \"pieces\": 1, "
+                          "\"loose_pieces\": [], \"genus\": 0,"),
             std::string::npos);
   EXPECT_NE(json.out.find("\"base\": null,"), std::string::npos);
   EXPECT_NE(json.out.find("\"fits_bed\": null,"), std::string::npos);
@@ -494,15 +555,16 @@ TEST_F(Build, ReadsPrintSettingsFromTheFile) {
   const auto check = run_command(lsolid() + " check --json h.stl", dir_);
   EXPECT_NE(check.out.find(", 0], \"max\": ["), std::string::npos) << check.out;
   EXPECT_NE(check.out.find(", 20]}"), std::string::npos) << check.out;
-  // A heptagon of circumradius 0.5 mm (0.684 mm²) times 20 mm.
-  EXPECT_NE(check.out.find("\"volume_mm3\": 13.68"), std::string::npos)
+  // An octagon whose sides touch a circle of radius 0.5 mm (0.828 mm²)
+  // times 20 mm.
+  EXPECT_NE(check.out.find("\"volume_mm3\": 16.568"), std::string::npos)
       << check.out;
   // The command line wins: a disc 2 mm thick (two walls) under the foot.
   const auto disc = run_command(lsolid() + " h.ls --base disc", dir_);
   EXPECT_EQ(disc.exit_code, 0);
   EXPECT_NE(disc.out.find("base: a disc of "), std::string::npos);
   EXPECT_NE(
-      disc.out.find(" mm radius, 2.0 mm thick, under a foot 1.0 mm wide\n"),
+      disc.out.find(" mm radius, 2.0 mm thick, under a foot 1.1 mm wide\n"),
       std::string::npos)
       << disc.out;
   EXPECT_NE(disc.out.find(", from ("), std::string::npos);

@@ -52,6 +52,21 @@ TEST(Containment, NamesThePartsAUnionLeftOut) {
   EXPECT_TRUE(witnesses_outside(parts[0].mesh, found, 100.0).empty());
 }
 
+TEST(Containment, FindsLooseFragmentsThatNoPartAccountsFor) {
+  std::vector<Part> parts = two_boxes();
+  parts.push_back(Part{box_mesh({30, 0, 0}, {32, 2, 2}), "far block"});
+  const std::vector<Witness> found = witnesses(parts);
+  TriangleMesh result = union_parts(parts).mesh;
+  // Two real pieces: nothing unaccounted for.
+  EXPECT_TRUE(unaccounted_pieces(result, found, 1e-3).empty());
+  // A sliver that a faulty repair might leave floating beside them.
+  append(result, box_mesh({0, 20, 0}, {0.5, 20.2, 0.1}));
+  const std::vector<Shell> loose = unaccounted_pieces(result, found, 1e-3);
+  ASSERT_EQ(loose.size(), 1U);
+  EXPECT_NEAR(loose[0].volume_mm3, 0.5 * 0.2 * 0.1, 1e-12);
+  EXPECT_EQ(loose[0].bounds.min.y, 20.0);
+}
+
 TEST(Containment, AnEmptyResultLosesEveryPart) {
   const std::vector<Part> parts = two_boxes();
   const std::vector<Witness> found = witnesses(parts);

@@ -21,18 +21,35 @@ lsys::Segment segment(glm::dvec3 a, glm::dvec3 b, double diameter,
   return lsys::Segment{a, b, diameter, diameter, 0, parent};
 }
 
-// The area of a regular m-gon inscribed in a circle of radius r.
+// The area of a regular m-gon whose sides touch a circle of radius r.
 double polygon_area(int m, double r) {
-  return 0.5 * m * r * r * std::sin(2 * std::numbers::pi / m);
+  return m * r * r * std::tan(std::numbers::pi / m);
 }
 
-TEST(Parts, ChoosesSidesFromTheChordTolerance) {
-  EXPECT_EQ(tube_sides(0.4, 0.05), 7);  // sagitta of a heptagon < 0.05 mm
+TEST(Parts, ChoosesSidesWhoseCornersStayWithinTheTolerance) {
+  EXPECT_EQ(tube_sides(0.4, 0.05), 7);  // corners 0.044 mm out
   EXPECT_EQ(tube_sides(5.0, 0.05), 23);
   EXPECT_EQ(tube_sides(0.01, 0.05), 6);
   const int m = tube_sides(2.0, 0.01);
-  EXPECT_LE(2.0 * (1 - std::cos(std::numbers::pi / m)), 0.01);
-  EXPECT_GT(2.0 * (1 - std::cos(std::numbers::pi / (m - 1))), 0.01);
+  EXPECT_LE(2.0 / std::cos(std::numbers::pi / m) - 2.0, 0.01);
+  EXPECT_GT(2.0 / std::cos(std::numbers::pi / (m - 1)) - 2.0, 0.01);
+  EXPECT_NEAR(tube_corner_radius(2.0, 0.01),
+              2.0 / std::cos(std::numbers::pi / m), 1e-15);
+}
+
+TEST(Parts, TubesAreNeverThinnerThanTheirWidthSoTouchingTubesFuse) {
+  lsys::Skeleton s;
+  // Two parallel tubes of diameter 1 whose circles touch along a line.
+  s.segments = {segment({0, 0, 0}, {0, 0, 10}, 1),
+                segment({1, 0, 0}, {1, 0, 10}, 1)};
+  const PartSet parts = build_parts(s, {.tolerance_mm = 0.05});
+  ASSERT_EQ(parts.parts.size(), 2U);
+  for (const Part& p : parts.parts) {
+    const Box b = bounds(p.mesh);
+    EXPECT_GE(b.size().x, 1.0 - 1e-12);
+    EXPECT_GE(b.size().y, 1.0 - 1e-12);
+  }
+  expect_printable(union_parts(parts.parts).mesh, 1);
 }
 
 TEST(Parts, MakesOneClosedTubePerSegmentChain) {
@@ -115,17 +132,20 @@ TEST(Parts, GivesUpJunctionsWhoseBranchesRunIntoTheTree) {
   expect_printable(union_parts(parts.parts).mesh);
 }
 
-TEST(Parts, ThickensPolygonsIntoPlatesOfWallThickness) {
+TEST(Parts, ThickensPolygonsIntoPlatesThickerThanTheThinnestTube) {
   lsys::Skeleton s;
   lsys::Polygon square;
   square.points = {{0, 0, 0}, {10, 0, 0}, {10, 0, 5}, {5, 0, 7}, {0, 0, 5}};
   s.polygons = {square};
-  const PartSet parts = build_parts(s, {.wall_mm = 0.8});
+  const PartSet parts = build_parts(s, {.wall_mm = 0.8, .tolerance_mm = 0.05});
   ASSERT_EQ(parts.plates, 1U);
   expect_printable(parts.parts[0].mesh);
-  EXPECT_NEAR(signed_volume(parts.parts[0].mesh), (50.0 + 10.0) * 0.8, 1e-9);
+  const double t = plate_thickness_mm(0.8, 0.05);
+  EXPECT_NEAR(t, 2 * 1.05 * tube_corner_radius(0.4, 0.05), 1e-15);
+  EXPECT_GT(t, 0.8);
+  EXPECT_NEAR(signed_volume(parts.parts[0].mesh), (50.0 + 10.0) * t, 1e-9);
   const Box b = bounds(parts.parts[0].mesh);
-  EXPECT_NEAR(b.size().y, 0.8, 1e-12);
+  EXPECT_NEAR(b.size().y, t, 1e-12);
 }
 
 TEST(Parts, TriangulatesConcaveLeaves) {
@@ -135,7 +155,8 @@ TEST(Parts, TriangulatesConcaveLeaves) {
   s.polygons = {arrow};
   const PartSet parts = build_parts(s, {.wall_mm = 1.0});
   expect_printable(parts.parts[0].mesh);
-  EXPECT_NEAR(signed_volume(parts.parts[0].mesh), 24.0, 1e-9);
+  EXPECT_NEAR(signed_volume(parts.parts[0].mesh),
+              24.0 * plate_thickness_mm(1.0, 0.05), 1e-9);
 }
 
 TEST(Parts, SkipsPolygonsThatCrossThemselves) {
@@ -212,7 +233,8 @@ TEST(Parts, UnitesAFanOfCoplanarTrianglesIntoOnePlate) {
             std::string::npos)
       << parts.parts[0].label;
   expect_printable(parts.parts[0].mesh);
-  EXPECT_NEAR(signed_volume(parts.parts[0].mesh), area * 0.8, 1e-9);
+  EXPECT_NEAR(signed_volume(parts.parts[0].mesh),
+              area * plate_thickness_mm(0.8, 0.05), 1e-9);
 }
 
 TEST(Parts, UnitesOverlappingCoplanarPolygonsAndKeepsApartTheRest) {
@@ -231,9 +253,10 @@ TEST(Parts, UnitesOverlappingCoplanarPolygonsAndKeepsApartTheRest) {
     volumes.push_back(signed_volume(p.mesh));
   }
   std::sort(volumes.begin(), volumes.end());
-  EXPECT_NEAR(volumes[0], 8 * 0.5, 1e-9);         // the crossing one
-  EXPECT_NEAR(volumes[1], 16 * 0.5, 1e-9);        // the far one
-  EXPECT_NEAR(volumes[2], (32 - 4) * 0.5, 1e-9);  // the two united
+  const double t = plate_thickness_mm(0.5, 0.05);
+  EXPECT_NEAR(volumes[0], 8 * t, 1e-9);         // the crossing one
+  EXPECT_NEAR(volumes[1], 16 * t, 1e-9);        // the far one
+  EXPECT_NEAR(volumes[2], (32 - 4) * t, 1e-9);  // the two united
 }
 
 TEST(Parts, UnitesCoplanarPolygonsAroundAHole) {
@@ -248,7 +271,7 @@ TEST(Parts, UnitesCoplanarPolygonsAroundAHole) {
   expect_printable(parts.parts[0].mesh);
   const ValidationReport r = validate(parts.parts[0].mesh);
   EXPECT_EQ(r.genus, 1);
-  EXPECT_NEAR(r.volume_mm3, 36.0 - 4.0, 1e-9);
+  EXPECT_NEAR(r.volume_mm3, (36.0 - 4.0) * plate_thickness_mm(1.0, 0.05), 1e-9);
 }
 
 TEST(Parts, KeepsCoplanarPolygonsOfTwoColoursApartWhenSplittingColours) {

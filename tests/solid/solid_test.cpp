@@ -47,8 +47,7 @@ TEST(Solid, HilbertCubeIsOneGenusZeroShellOfTheExpectedVolume) {
   // One mitred tube of diameter 3 mm along 63 segments of 10 mm: its volume
   // is the cross-section times the axis length.
   const int m = tube_sides(1.5, 0.05);
-  const double section =
-      0.5 * m * 1.5 * 1.5 * std::sin(2 * std::numbers::pi / m);
+  const double section = m * 1.5 * 1.5 * std::tan(std::numbers::pi / m);
   EXPECT_NEAR(r.volume_mm3, section * 630.0, 0.01 * section * 630.0);
 }
 
@@ -61,11 +60,11 @@ TEST(Solid, FitsTheLongestSideAndClampsToTheWall) {
   const Solid thin = build_solid(
       parse("\u03C9: F\nwidth: 0.001\n"),
       {.print = {.wall_mm = 0.8, .size_mm = 50, .base = Base::None}});
-  // A heptagon of circumradius 0.4 mm: between its width across flats and
-  // its diameter.
-  EXPECT_GE(thin.report.validation.bounds.size().x,
-            0.8 * std::cos(3.1416 / 7) - 1e-6);
-  EXPECT_LE(thin.report.validation.bounds.size().x, 0.8 + 1e-6);
+  // A heptagon whose sides touch a circle of radius 0.4 mm: never thinner
+  // than the wall, at most as wide as its corners.
+  EXPECT_GE(thin.report.validation.bounds.size().x, 0.8 - 1e-6);
+  EXPECT_LE(thin.report.validation.bounds.size().x,
+            2 * tube_corner_radius(0.4, 0.05) + 1e-6);
   EXPECT_NEAR(thin.report.validation.bounds.size().z, 50.0, 0.01);
 }
 
@@ -83,6 +82,35 @@ TEST(Solid, HoldsTheSizeAskedForWithJointsAndMitres) {
   const Solid tall =
       build_solid(koch, {.print = {.height_mm = 30.0, .base = Base::None}});
   EXPECT_NEAR(tall.report.validation.bounds.size().z, 30.0, 0.06);
+}
+
+TEST(Solid, TheSizeAskedForCountsTheBaseDisc) {
+  // A thin tree whose disc is wider than the tree and lifts it by half
+  // its thickness: the disc counts in the longest side and the height.
+  const lsys::Grammar tree =
+      parse("\u03B4=30\u00B0\nwidth: 0.1\n\u03C9: F[&F[+F]F]F[^F[-F]F]F\n");
+  for (const double size : {40.0, 100.0}) {
+    const Solid s = build_solid(tree, {.print = {.size_mm = size}});
+    ASSERT_TRUE(s.report.placement.has_base);
+    const glm::dvec3 extent = s.report.validation.bounds.size();
+    EXPECT_NEAR(std::max({extent.x, extent.y, extent.z}), size, 1e-3 * size);
+  }
+  const Solid tall = build_solid(tree, {.print = {.height_mm = 30.0}});
+  ASSERT_TRUE(tall.report.placement.has_base);
+  EXPECT_NEAR(tall.report.validation.bounds.size().z, 30.0, 0.01);
+}
+
+TEST(Solid, RefusesASizeThatTheWallsCannotMeet) {
+  try {
+    (void)build_solid(parse("\u03C9: F\n"),
+                      {.print = {.wall_mm = 200.0, .base = Base::None}});
+    FAIL() << "no error";
+  } catch (const lsys::ParseError& e) {
+    EXPECT_EQ(e.diagnostic().file, "--size");
+    EXPECT_NE(e.diagnostic().message.find("a size of 100 mm cannot be met"),
+              std::string::npos)
+        << e.diagnostic().message;
+  }
 }
 
 TEST(Solid, APlanarFigureLiesFlatOnAFlatUnderside) {
@@ -277,8 +305,8 @@ TEST(Solid, KeepsALeafDrawnAsAFanOfCoplanarTriangles) {
   EXPECT_EQ(s.report.plates, 1U);  // the fan, united in its plane
   EXPECT_GT(s.report.witnesses_checked, 40U);
   // manifold-3d 3.5.4 unites the same parts (`lsolid --no-union`) into
-  // 3607.1 mm³.
-  EXPECT_NEAR(s.report.validation.volume_mm3, 3607.1, 0.005 * 3607.1);
+  // 4219.3 mm³.
+  EXPECT_NEAR(s.report.validation.volume_mm3, 4219.3, 0.005 * 4219.3);
 }
 
 TEST(Solid, BuildsLeavesOfOverlappingCoplanarPolygons) {
@@ -288,8 +316,8 @@ TEST(Solid, BuildsLeavesOfOverlappingCoplanarPolygons) {
   EXPECT_EQ(s.report.segments, 351U);
   EXPECT_EQ(s.report.plates, 4U);
   EXPECT_TRUE(s.report.decimated);
-  // manifold-3d 3.5.4: 1023.4 mm³ for the same parts.
-  EXPECT_NEAR(s.report.validation.volume_mm3, 1023.4, 0.005 * 1023.4);
+  // manifold-3d 3.5.4: 1199.0 mm³ for the same parts.
+  EXPECT_NEAR(s.report.validation.volume_mm3, 1199.0, 0.005 * 1199.0);
 }
 
 TEST(Solid, RefusesAModelThatDrawsNothing) {

@@ -23,6 +23,25 @@ TEST(Validate, AcceptsAClosedOutwardBox) {
   EXPECT_TRUE(r.problems().empty());
 }
 
+TEST(Validate, ListsPiecesLargestFirstAndTellsCavitiesApart) {
+  TriangleMesh m = box_mesh({0, 0, 0}, {1, 1, 1});
+  append(m, box_mesh({5, 0, 0}, {7, 2, 2}));
+  // A cavity inside the large box: a shell of negative volume.
+  TriangleMesh cavity = box_mesh({5.5, 0.5, 0.5}, {6, 1, 1});
+  for (auto& t : cavity.triangles) std::swap(t[1], t[2]);
+  append(m, cavity);
+  const ValidationReport r = validate(m);
+  EXPECT_TRUE(r.is_printable());
+  EXPECT_EQ(r.shells, 3U);
+  EXPECT_EQ(r.pieces(), 2U);
+  ASSERT_EQ(r.shell_list.size(), 3U);
+  EXPECT_NEAR(r.shell_list[0].volume_mm3, 8.0, 1e-12);
+  EXPECT_NEAR(r.shell_list[1].volume_mm3, 1.0, 1e-12);
+  EXPECT_NEAR(r.shell_list[2].volume_mm3, -0.125, 1e-12);
+  EXPECT_EQ(r.shell_list[1].bounds.max, glm::dvec3(1, 1, 1));
+  EXPECT_EQ(r.shell_list[0].triangles, 12U);
+}
+
 TEST(Validate, FindsHoles) {
   TriangleMesh m = box_mesh({0, 0, 0}, {1, 1, 1});
   m.triangles.pop_back();

@@ -8,6 +8,7 @@
 
 #include "lsolid/mesh.hpp"
 #include "lsolid/parts.hpp"
+#include "lsolid/validate.hpp"
 
 namespace lsolid {
 
@@ -34,6 +35,15 @@ struct Witness {
 /// @pre `mesh` is closed and outward-oriented.
 /// @throws GeometryError if `mesh` cannot be read as a surface.
 [[nodiscard]] std::vector<Witness> witnesses_outside(
+    const TriangleMesh& mesh, const std::vector<Witness>& witnesses,
+    double min_depth_mm);
+
+/// The pieces of `mesh` (edge-connected shells of positive volume) that
+/// hold none of the witnesses at least `min_depth_mm` deep: fragments that
+/// no part accounts for, which only a faulty repair can make. Largest
+/// first.
+/// @pre `mesh` is closed and outward-oriented.
+[[nodiscard]] std::vector<Shell> unaccounted_pieces(
     const TriangleMesh& mesh, const std::vector<Witness>& witnesses,
     double min_depth_mm);
 

@@ -23,7 +23,10 @@ struct Part {
 
 /// How to mesh the skeleton.
 struct PartOptions {
-  double wall_mm = 0.8;        ///< leaf plate thickness
+  /// The thinnest tube's width; leaf plates are 5% thicker than such a
+  /// tube across its corners (0.93 mm for 0.8 mm), so that veins in a leaf
+  /// lie inside it.
+  double wall_mm = 0.8;
   double tolerance_mm = 0.05;  ///< chord error of tube cross-sections
   /// One colour per part: tubes end where the colour changes and branches
   /// of several colours meet at a joint sphere, not a hull. Coloured output
@@ -52,16 +55,27 @@ struct PartSet {
 /// (B-Mesh), so that a whole tree can be one closed part; each such part is
 /// checked not to cut itself, and junctions are given up until none does.
 /// Elsewhere a joint sphere encloses the tubes' end caps for the union to
-/// merge. Each polygon becomes a plate of wall thickness, fused by a joint
-/// to the segment it grows from.
+/// merge. Each polygon becomes a plate a little thicker than the wall
+/// (coplanar polygons that overlap or share edges are united first), fused
+/// by a joint to the segment it grows from.
 [[nodiscard]] PartSet build_parts(const lsys::Skeleton& skeleton,
                                   const PartOptions& options = {});
 
 /// The bounding box of all parts.
 [[nodiscard]] Box bounds(const std::vector<Part>& parts);
 
-/// The number of sides of a tube of this radius whose flat sides stay
-/// within `tolerance_mm` of the circle (at least 6).
+/// The number of sides of a tube of this radius whose flat sides touch the
+/// circle and whose corners stand out from it by at most `tolerance_mm`
+/// (6 to 128). A tube is thus never thinner than its width, and tubes whose
+/// circles touch overlap.
 [[nodiscard]] int tube_sides(double radius_mm, double tolerance_mm);
+
+/// How far the corners of such a tube lie from its axis.
+[[nodiscard]] double tube_corner_radius(double radius_mm, double tolerance_mm);
+
+/// The thickness of leaf plates: 5% more than the thinnest tube (of
+/// diameter `wall_mm`) across its corners, so that veins drawn in a leaf at
+/// that width lie inside the plate rather than flush with its faces.
+[[nodiscard]] double plate_thickness_mm(double wall_mm, double tolerance_mm);
 
 }  // namespace lsolid

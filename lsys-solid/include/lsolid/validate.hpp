@@ -10,6 +10,14 @@
 
 namespace lsolid {
 
+/// One edge-connected shell of a mesh.
+struct Shell {
+  std::size_t triangles = 0;
+  /// Positive for a piece of solid, negative for a cavity inside one.
+  double volume_mm3 = 0.0;
+  Box bounds;
+};
+
 /// What `validate` found. A mesh is printable when it is closed, edge- and
 /// vertex-manifold, consistently and outward oriented, free of degenerate
 /// faces and of self-intersections (tested with exact predicates), and
@@ -30,7 +38,11 @@ struct ValidationReport {
   bool orientation_checked = false;
   bool is_outward = false;
   std::size_t shells = 0;  ///< edge-connected components
-  int genus = -1;          ///< total over shells; -1 unless closed, manifold
+  /// Every shell, the largest volume first. A slicer prints each shell of
+  /// positive volume as a piece of its own: more than one, and the model
+  /// falls apart into loose parts.
+  std::vector<Shell> shell_list;
+  int genus = -1;  ///< total over shells; -1 unless closed, manifold
   double volume_mm3 = 0.0;
   Box bounds;
 
@@ -42,6 +54,8 @@ struct ValidationReport {
            self_intersecting_pairs == 0 && orientation_checked && is_outward &&
            volume_mm3 > 0.0;
   }
+  /// The shells of positive volume: the separate pieces it prints as.
+  [[nodiscard]] std::size_t pieces() const noexcept;
   /// One line per problem, empty when printable.
   [[nodiscard]] std::vector<std::string> problems() const;
 };

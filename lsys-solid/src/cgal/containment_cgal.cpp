@@ -15,11 +15,16 @@
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <glm/geometric.hpp>
+#include <unordered_map>
 
 #include "conversion.hpp"
 #include "lsolid/containment.hpp"
 #include "lsolid/errors.hpp"
+#include "union_find.hpp"
 
 namespace lsolid {
 namespace {
@@ -99,6 +104,77 @@ std::vector<Witness> witnesses_outside(const TriangleMesh& mesh,
     }
   }
   return outside;
+}
+
+std::vector<Shell> unaccounted_pieces(const TriangleMesh& mesh,
+                                      const std::vector<Witness>& witnesses,
+                                      double min_depth_mm) {
+  const std::size_t n = mesh.triangles.size();
+  UnionFind shells(n);
+  std::unordered_map<std::uint64_t, std::uint32_t> first_face;
+  for (std::uint32_t f = 0; f < n; ++f) {
+    const auto& t = mesh.triangles[f];
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::uint32_t a = t[k];
+      const std::uint32_t b = t[(k + 1) % 3];
+      const std::uint64_t key =
+          (static_cast<std::uint64_t>(std::min(a, b)) << 32U) | std::max(a, b);
+      const auto [it, inserted] = first_face.emplace(key, f);
+      if (!inserted) shells.join(f, it->second);
+    }
+  }
+  // Each shell as a mesh of its own (a vertex of two shells, where they
+  // touch at a point, is copied into each).
+  constexpr std::uint32_t kNone = 0xFFFFFFFFU;
+  std::unordered_map<std::uint32_t, std::size_t> index_of_root;
+  std::vector<TriangleMesh> pieces;
+  std::vector<std::uint32_t> local(mesh.vertices.size(), kNone);
+  std::vector<std::size_t> owner(mesh.vertices.size(), 0);
+  for (std::uint32_t f = 0; f < n; ++f) {
+    const auto [it, inserted] =
+        index_of_root.try_emplace(shells.find(f), pieces.size());
+    if (inserted) pieces.emplace_back();
+    TriangleMesh& piece = pieces[it->second];
+    std::array<std::uint32_t, 3> t{};
+    for (std::size_t k = 0; k < 3; ++k) {
+      const std::uint32_t v = mesh.triangles[f][k];
+      if (local[v] == kNone || owner[v] != it->second) {
+        local[v] = static_cast<std::uint32_t>(piece.vertices.size());
+        owner[v] = it->second;
+        piece.vertices.push_back(mesh.vertices[v]);
+      }
+      t[k] = local[v];
+    }
+    piece.triangles.push_back(t);
+  }
+  std::vector<Shell> out;
+  // One shell holds every witness the union kept (checked apart).
+  if (pieces.size() <= 1) return out;
+  for (const TriangleMesh& piece : pieces) {
+    const double volume = signed_volume(piece);
+    if (volume <= 0.0) continue;  // a cavity inside a piece
+    const Box box = bounds(piece);
+    std::vector<Witness> candidates;
+    for (const Witness& w : witnesses) {
+      if (w.depth_mm < min_depth_mm) continue;
+      const glm::dvec3& p = w.point;
+      if (p.x >= box.min.x && p.y >= box.min.y && p.z >= box.min.z &&
+          p.x <= box.max.x && p.y <= box.max.y && p.z <= box.max.z) {
+        candidates.push_back(w);
+      }
+    }
+    if (witnesses_outside(piece, candidates, min_depth_mm).size() <
+        candidates.size()) {
+      continue;  // some witness lies inside this piece
+    }
+    out.push_back(Shell{.triangles = piece.triangles.size(),
+                        .volume_mm3 = volume,
+                        .bounds = box});
+  }
+  std::stable_sort(out.begin(), out.end(), [](const Shell& a, const Shell& b) {
+    return a.volume_mm3 > b.volume_mm3;
+  });
+  return out;
 }
 
 }  // namespace lsolid

@@ -81,9 +81,13 @@ void print_report(const SolidReport& r, bool united) {
   if (r.decimated) {
     fmt::print(
         "decimation: {} -> {} triangles, {} collapses refused as they would "
-        "cut the mesh; deviation {:.3f} mm (Hausdorff, sampled)\n",
+        "cut the mesh; deviation {:.3f} mm (Hausdorff, sampled), {} the "
+        "tolerance of {:.3g} mm{}\n",
         d.triangles_before, d.triangles_after, d.refused_intersections,
-        d.max_deviation_mm);
+        d.max_deviation_mm, d.within_tolerance ? "within" : "BEYOND",
+        d.tolerance_mm,
+        d.attempts > 1 ? fmt::format(" ({} runs, aiming lower)", d.attempts)
+                       : std::string());
     if (!d.reached_max_triangles) {
       fmt::print(
           "decimation: could not reach --max-triangles without breaking the "
@@ -174,10 +178,12 @@ std::string json_report(const Solid& solid, const OverhangReport& over,
           ? fmt::format(
                 "{{\"triangles_before\": {}, \"triangles_after\": {}, "
                 "\"refused_intersections\": {}, \"max_deviation_mm\": {}, "
-                "\"reached_max_triangles\": {}}}",
+                "\"tolerance_mm\": {}, \"within_tolerance\": {}, "
+                "\"runs\": {}, \"reached_max_triangles\": {}}}",
                 r.decimation.triangles_before, r.decimation.triangles_after,
                 r.decimation.refused_intersections,
-                r.decimation.max_deviation_mm,
+                r.decimation.max_deviation_mm, r.decimation.tolerance_mm,
+                r.decimation.within_tolerance, r.decimation.attempts,
                 r.decimation.reached_max_triangles)
           : std::string("null"),
       colored ? fmt::format("[{}]", fmt::join(colors, ", "))
@@ -314,6 +320,16 @@ int run_build(const BuildCommand& command) {
   const Solid solid = build_solid(grammar, options);
   if (bar) std::fprintf(stderr, "\r%50s\r", "");
   warn_about_polygons(solid.report.dropped);
+  const DecimateStats& decimation = solid.report.decimation;
+  if (solid.report.decimated && !decimation.within_tolerance) {
+    std::fprintf(stderr,
+                 "warning: decimation moved the surface by up to %.3f mm, "
+                 "more than the tolerance of %.3g mm%s\n",
+                 decimation.max_deviation_mm, decimation.tolerance_mm,
+                 decimation.beyond_tolerance_for_cap
+                     ? ", to reach --max-triangles"
+                     : " (--no-decimate keeps every triangle)");
+  }
   if (text) print_report(solid.report, options.unite);
   if (text && colored) print_colors(solid, options.print.colors);
   const OverhangReport over = overhang(solid.mesh);

@@ -157,6 +157,11 @@ TEST_F(Build, DecimatesTheBushWithinToleranceAndItStillPassesCheck) {
   ASSERT_TRUE(std::regex_search(r.out, m, line)) << r.out;
   EXPECT_LT(std::stoul(m[2]), std::stoul(m[1]));
   EXPECT_LE(std::stod(m[3]), 0.05);
+  EXPECT_NE(r.out.find(" mm (Hausdorff, sampled), within the tolerance of "
+                       "0.05 mm"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.err.find("warning: decimation"), std::string::npos) << r.err;
   EXPECT_NE(r.out.find("triangles: " + m[2].str() + "\n"), std::string::npos);
   const auto check = run_command(lsolid() + " check bush.stl", dir_);
   EXPECT_EQ(check.exit_code, 0) << check.out;
@@ -165,6 +170,17 @@ TEST_F(Build, DecimatesTheBushWithinToleranceAndItStillPassesCheck) {
   ASSERT_EQ(capped.exit_code, 0) << capped.err;
   EXPECT_NE(capped.out.find("-> 1500 triangles"), std::string::npos)
       << capped.out;
+  // Beyond the tolerance: said in the report and warned about.
+  EXPECT_NE(capped.out.find("BEYOND the tolerance of 0.05 mm"),
+            std::string::npos)
+      << capped.out;
+  EXPECT_NE(capped.err.find("warning: decimation moved the surface by up to "),
+            std::string::npos)
+      << capped.err;
+  EXPECT_NE(capped.err.find("more than the tolerance of 0.05 mm, to reach "
+                            "--max-triangles\n"),
+            std::string::npos)
+      << capped.err;
   EXPECT_EQ(run_command(lsolid() + " check capped.stl", dir_).exit_code, 0);
   const auto raw =
       run_command(lsolid() + " bush.ls -n 4 --no-decimate -o raw.stl", dir_);

@@ -146,6 +146,39 @@ TEST(Decimate, TheHilbertCubeHasNothingToRemoveWithinTolerance) {
   expect_printable(capped.mesh);
 }
 
+TEST(Decimate, StartsAgainAimingLowerWhenItOvershootsTheTolerance) {
+  const TriangleMesh bush = union_of(
+      lsys::testing::parse_file("printables/abop-1.25-bush.ls",
+                                {.extra_settings = print_setting_names()}),
+      4);
+  // Aiming at three times the tolerance overshoots it; what is returned
+  // is still within it, found by decimating again.
+  const Decimated d = decimate(bush, {.tolerance_mm = 0.05, .aim = 3.0});
+  EXPECT_GT(d.stats.attempts, 1);
+  EXPECT_TRUE(d.stats.within_tolerance);
+  EXPECT_LE(d.stats.max_deviation_mm, 0.05);
+  EXPECT_LE(hausdorff_distance_mm(bush, d.mesh, 0.002), 0.05 + 0.002);
+  expect_printable(d.mesh);
+  const Decimated first = decimate(bush, {.tolerance_mm = 0.05});
+  EXPECT_EQ(first.stats.attempts, 1);
+  EXPECT_TRUE(first.stats.within_tolerance);
+}
+
+TEST(Decimate, MeasuresTheTrueDeviationWhenACapShrinksTheModel) {
+  const TriangleMesh bush = union_of(
+      lsys::testing::parse_file("printables/abop-1.25-bush.ls",
+                                {.extra_settings = print_setting_names()}),
+      2);
+  const Decimated d = decimate(bush, {.max_triangles = 40});
+  EXPECT_TRUE(d.stats.beyond_tolerance_for_cap);
+  EXPECT_FALSE(d.stats.within_tolerance);
+  // Once capped at 100 times the tolerance (5 mm) and printed as measured.
+  const double exact = hausdorff_distance_mm(bush, d.mesh, 0.01);
+  EXPECT_GT(exact, 5.0);
+  EXPECT_LE(d.stats.max_deviation_mm, exact + 0.01);
+  EXPECT_GE(d.stats.max_deviation_mm, 0.9 * exact);
+}
+
 TEST(Decimate, SaysWhenTheCapCannotBeReached) {
   const Decimated d =
       decimate(box_mesh({0, 0, 0}, {1, 1, 1}), {.max_triangles = 4});

@@ -88,6 +88,12 @@ void print_report(const SolidReport& r, bool united) {
         d.tolerance_mm,
         d.attempts > 1 ? fmt::format(" ({} runs, aiming lower)", d.attempts)
                        : std::string());
+    if (d.short_edges_left > 0) {
+      fmt::print(
+          "decimation: {} edges shorter than 0.03 mm left (no collapse could "
+          "remove them within the tolerance)\n",
+          d.short_edges_left);
+    }
     if (!d.reached_max_triangles) {
       fmt::print(
           "decimation: could not reach --max-triangles without breaking the "
@@ -179,11 +185,13 @@ std::string json_report(const Solid& solid, const OverhangReport& over,
                 "{{\"triangles_before\": {}, \"triangles_after\": {}, "
                 "\"refused_intersections\": {}, \"max_deviation_mm\": {}, "
                 "\"tolerance_mm\": {}, \"within_tolerance\": {}, "
-                "\"runs\": {}, \"reached_max_triangles\": {}}}",
+                "\"runs\": {}, \"short_edges_left\": {}, "
+                "\"reached_max_triangles\": {}}}",
                 r.decimation.triangles_before, r.decimation.triangles_after,
                 r.decimation.refused_intersections,
                 r.decimation.max_deviation_mm, r.decimation.tolerance_mm,
                 r.decimation.within_tolerance, r.decimation.attempts,
+                r.decimation.short_edges_left,
                 r.decimation.reached_max_triangles)
           : std::string("null"),
       colored ? fmt::format("[{}]", fmt::join(colors, ", "))

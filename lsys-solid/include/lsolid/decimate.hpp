@@ -27,6 +27,10 @@ struct DecimateOptions {
   bool refuse_intersections = true;
   /// Measure the Hausdorff distance to the input afterwards.
   bool measure_deviation = true;
+  /// Edges shorter than this (and than the tolerance) are collapsed last,
+  /// under the same vetoes: slicers merge vertices closer than 0.03 mm
+  /// (CuraEngine among them) and then find overlapping faces. 0 keeps them.
+  double min_edge_mm = 0.03;
   /// The fraction of the tolerance that the vetoes aim at first: they test
   /// at sample points, and the surface strays a little past them between.
   double aim = 0.8;
@@ -39,6 +43,9 @@ struct DecimateStats {
   std::size_t triangles_before = 0;
   std::size_t triangles_after = 0;
   std::size_t collapses = 0;
+  /// Edges of the result shorter than `min_edge_mm`: those no collapse
+  /// could remove without breaking the mesh or leaving the tolerance.
+  std::size_t short_edges_left = 0;
   /// Collapses refused because a new triangle would cut the mesh.
   std::size_t refused_intersections = 0;
   /// The symmetric Hausdorff distance to the input in millimetres,

@@ -152,6 +152,11 @@ std::string json_report(const Solid& solid, const OverhangReport& over,
         fmt::format("{{\"color\": {}, \"rgb\": \"{}\", \"triangles\": {}}}",
                     color, hex(palette_color(color, palette)), count));
   }
+  std::string warnings;
+  for (const std::string& w : r.warnings) {
+    if (!warnings.empty()) warnings += ", ";
+    append_json_string(warnings, w);
+  }
   std::vector<std::string> volumes;
   for (const ColoredMesh& m : solid.volumes) {
     volumes.push_back(
@@ -169,7 +174,7 @@ std::string json_report(const Solid& solid, const OverhangReport& over,
       "\"volume_mm3\": {}, "
       "\"bounds\": {{\"min\": {}, \"max\": {}}}, \"printable\": {}, "
       "\"shells\": {}, {}, \"genus\": {}, \"overhang_mm2\": {}, "
-      "\"needs_supports\": {}, \"fits_bed\": {}, "
+      "\"needs_supports\": {}, \"fits_bed\": {}, \"warnings\": [{}], "
       "\"seconds\": {{\"skeleton\": {}, \"parts\": {}, \"union\": {}, "
       "\"rounding\": {}, \"decimation\": {}, \"check\": {}, "
       "\"volumes\": {}}}}}\n",
@@ -201,7 +206,7 @@ std::string json_report(const Solid& solid, const OverhangReport& over,
       v.triangles, v.volume_mm3, json_point(v.bounds.min),
       json_point(v.bounds.max), v.is_printable(), v.shells, json_pieces(v),
       v.genus, over.area_mm2, over.needs_supports,
-      bed ? (fits ? "true" : "false") : "null", r.seconds.skeleton,
+      bed ? (fits ? "true" : "false") : "null", warnings, r.seconds.skeleton,
       r.seconds.parts, r.seconds.unite, r.seconds.round, r.seconds.decimate,
       r.seconds.check, r.seconds.volumes);
 }
@@ -328,6 +333,9 @@ int run_build(const BuildCommand& command) {
   const Solid solid = build_solid(grammar, options);
   if (bar) std::fprintf(stderr, "\r%50s\r", "");
   warn_about_polygons(solid.report.dropped);
+  for (const std::string& warning : solid.report.warnings) {
+    std::fprintf(stderr, "warning: %s\n", warning.c_str());
+  }
   const DecimateStats& decimation = solid.report.decimation;
   if (solid.report.decimated && !decimation.within_tolerance) {
     std::fprintf(stderr,

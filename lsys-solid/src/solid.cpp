@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <glm/geometric.hpp>
 #include <map>
 
 #include "lsolid/boolean.hpp"
@@ -32,6 +33,12 @@ namespace {
 constexpr int kSizePasses = 8;
 constexpr double kSizeTolerance = 1e-4;
 constexpr double kSizeRefused = 0.01;
+// Lumps: a median segment wider than long, or a model standing up that
+// fills more than half of its bounding box (of the printables, the Hilbert
+// cube fills most, 13%, the bush 2%; the 3D Hilbert curve drawn a step
+// wide, 73%).
+constexpr double kWideRatio = 1.0;
+constexpr double kLumpFill = 0.5;
 constexpr double kDefaultSizeMm = 100.0;  // as scale_to_print's default
 
 using Progress = std::function<void(std::string_view, double)>;
@@ -392,6 +399,48 @@ std::vector<ColoredMesh> color_volumes(std::vector<Part> parts,
   return volumes;
 }
 
+// A file whose widths are in other units than its lengths (Honda's trees
+// in ABOP Table 2.1: `A(1, 10)`, width 10 for length 1), or that sets no
+// width in a dialect whose default is a whole step, prints as a lump. The
+// segments' median width over length says the first.
+std::optional<std::string> widths_dwarf_lengths(
+    const lsys::Skeleton& skeleton) {
+  std::vector<double> ratios;
+  for (const lsys::Segment& s : skeleton.segments) {
+    const double length = glm::length(s.p1 - s.p0);
+    if (length <= 0.0) continue;
+    ratios.push_back(std::max(s.start_diameter, s.end_diameter) / length);
+  }
+  if (ratios.empty()) return std::nullopt;
+  auto middle = ratios.begin() + static_cast<std::ptrdiff_t>(ratios.size() / 2);
+  std::nth_element(ratios.begin(), middle, ratios.end());
+  if (*middle <= kWideRatio) return std::nullopt;
+  return fmt::format(
+      "the widths dwarf the lengths: the median segment is {:.3g} times as "
+      "wide as it is long, so the model prints as a lump; if the file's "
+      "widths are in other units than its lengths, set `width scale:` (or a "
+      "smaller `width:`)",
+      *middle);
+}
+
+// The share of its bounding box a united model fills. Tubes a whole step
+// wide (the 3D Hilbert curve with cpfg's default width) fill most of it.
+std::optional<std::string> fills_its_box(const SolidReport& report,
+                                         double wall_mm) {
+  const ValidationReport& v = report.validation;
+  const glm::dvec3 size = v.bounds.size();
+  const double box = size.x * size.y * size.z;
+  if (report.placement.lies_flat || !(box > 0.0)) return std::nullopt;
+  const double fill = v.volume_mm3 / box;
+  if (fill <= kLumpFill) return std::nullopt;
+  return fmt::format(
+      "the model fills {:.0f}% of its bounding box ({:.1f} cm³ of material): "
+      "its tubes are as wide as their spacing; set a smaller `width:` or "
+      "`width scale:` in the file, or a larger --size (the wall, {:.2g} mm, "
+      "widens thinner lines)",
+      100.0 * fill, v.volume_mm3 / 1000.0, wall_mm);
+}
+
 }  // namespace
 
 Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
@@ -410,6 +459,9 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   report.dropped.unclosed_polygons = skeleton.unclosed_polygons;
   report.dropped.unmatched_polygon_ends = skeleton.unmatched_polygon_ends;
   report.seconds.skeleton = clock.lap();
+  if (auto warning = widths_dwarf_lengths(skeleton)) {
+    report.warnings.push_back(std::move(*warning));
+  }
   tell("parts", 0.0);
 
   // scale_to_print sizes the skeleton with round tubes; mitres, joints,
@@ -485,6 +537,11 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
     solid.volumes = color_volumes(std::move(colored), solid, options, tell);
     report.seconds.volumes = clock.lap();
     tell("volumes", 1.0);
+  }
+  if (options.unite && report.validation.is_printable()) {
+    if (auto warning = fills_its_box(report, options.print.wall_mm)) {
+      report.warnings.push_back(std::move(*warning));
+    }
   }
   return solid;
 }

@@ -224,7 +224,7 @@ TEST(Interpretation, RestoresTheWholeStateAfterABranch) {
   ASSERT_EQ(s.segments.size(), 3U);
   EXPECT_EQ(s.segments[2].p0, glm::dvec3(0, 0, 1));
   EXPECT_EQ(s.segments[2].p1, glm::dvec3(0, 0, 2));
-  EXPECT_EQ(s.segments[2].start_diameter, 1.0);
+  EXPECT_EQ(s.segments[2].start_diameter, 0.1);  // the default width
   EXPECT_EQ(s.segments[2].color, 0);
 }
 

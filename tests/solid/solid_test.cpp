@@ -116,8 +116,8 @@ TEST(Solid, RefusesASizeThatTheWallsCannotMeet) {
 TEST(Solid, APlanarFigureLiesFlatOnAFlatUnderside) {
   // ABOP fig. 1.7 b, quadratic Koch island, n = 1: every branch in one
   // plane.
-  const lsys::Grammar koch =
-      parse("n=1, \u03B4=90\u00B0\nF-F-F-F\nF \u2192 F-F+F+FF-F-F+F\n");
+  const lsys::Grammar koch = parse(
+      "n=1, \u03B4=90\u00B0\nwidth: 1\nF-F-F-F\nF \u2192 F-F+F+FF-F-F+F\n");
   const Solid s = build_solid(koch, {.print = {.size_mm = 50.0}});
   expect_printable(s.mesh, 1);
   EXPECT_TRUE(s.report.placement.lies_flat);
@@ -325,13 +325,48 @@ TEST(Solid, BuildsLeavesOfOverlappingCoplanarPolygons) {
   EXPECT_NEAR(s.report.validation.volume_mm3, 1199.0, 0.01 * 1199.0);
 }
 
+TEST(Solid, AFileWithoutWidthsPrintsAsALineDrawing) {
+  // The lecture's 3D Hilbert curve typed verbatim: no width. A tenth of a
+  // step wide, it keeps its shape; a step wide (cpfg's default, once ours)
+  // it filled 73% of its cube and is warned about.
+  const std::string verbatim =
+      "n=2, \u03B4=90\u00B0\nA\n"
+      "A \u2192 B-F+CFC+F-D&F^D-F+&&CFC+F+B//\n"
+      "B \u2192 A&F^CFB^F^D^^-F-D^|F^B|FC^F^A//\n"
+      "C \u2192 |D^|F^B-F+C^F^A&&FA&F^C+F+B^F^D//\n"
+      "D \u2192 |CFB-F+B|FA&F^A&&FB-F+B|FC//\n";
+  const Solid thin = build_solid(parse(verbatim));
+  EXPECT_TRUE(thin.report.warnings.empty());
+  const glm::dvec3 size = thin.report.validation.bounds.size();
+  EXPECT_LT(thin.report.validation.volume_mm3, 0.05 * size.x * size.y * size.z);
+  const Solid lump = build_solid(parse(verbatim + "width: 1\n"));
+  ASSERT_EQ(lump.report.warnings.size(), 1U);
+  EXPECT_EQ(lump.report.warnings[0].rfind("the model fills 7", 0), 0U)
+      << lump.report.warnings[0];
+  EXPECT_NE(lump.report.warnings[0].find("`width scale:`"), std::string::npos);
+}
+
+TEST(Solid, WarnsWhenWidthsDwarfLengths) {
+  // Honda's tree as ABOP Table 2.1 prints it: width 10 for length 1.
+  const Solid s = build_solid(parse(
+      "n=3, \u03B4=137.5\n\u03C9 : A(1, 10)\n"
+      "A(l,w) \u2192 !(w)F(l)[&(45)B(l*0.6,w*0.707)]/(137.5)A(l*0.9,w*0.707)\n"
+      "B(l,w) \u2192 !(w)F(l)[-(45)$C(l*0.6,w*0.707)]C(l*0.9,w*0.707)\n"
+      "C(l,w) \u2192 !(w)F(l)[+(45)$B(l*0.6,w*0.707)]B(l*0.9,w*0.707)\n"));
+  ASSERT_GE(s.report.warnings.size(), 1U);
+  EXPECT_EQ(s.report.warnings[0].rfind(
+                "the widths dwarf the lengths: the median segment is ", 0),
+            0U)
+      << s.report.warnings[0];
+}
+
 TEST(Solid, RefusesAModelThatDrawsNothing) {
   EXPECT_THROW((void)build_solid(parse("\u03C9: A+B")), GeometryError);
 }
 
 TEST(Solid, WritesOverlappingPartsWhenAskedNotToUnite) {
-  const Solid s =
-      build_solid(parse("\u03C9: F[+F]F\n\u03B4=45"), {.unite = false});
+  const Solid s = build_solid(parse("\u03C9: F[+F]F\n\u03B4=45\nwidth: 1"),
+                              {.unite = false});
   EXPECT_EQ(s.report.tubes, 2U);
   EXPECT_GT(s.report.validation.self_intersecting_pairs, 0U);
 }

@@ -28,10 +28,13 @@ struct ExtraSetting {
 /// The settings of a `.ls` file (docs/language.md lists every one with its
 /// spellings). Lengths are in model units; widths are diameters.
 struct Settings {
-  int derivation_length = 1;   ///< `n`
-  double angle_deg = 45.0;     ///< δ, cpfg's default
-  double step = 1.0;           ///< the length of `F` without a parameter
-  double initial_width = 1.0;  ///< diameter, cpfg's default
+  int derivation_length = 1;  ///< `n`
+  double angle_deg = 45.0;    ///< δ, cpfg's default
+  double step = 1.0;          ///< the length of `F` without a parameter
+  /// Diameter: a tenth of a step, so that a file that sets no width prints
+  /// as its figure looks, a line drawing (cpfg's default of 1 is a pixel;
+  /// as a width it is a whole step, and neighbours fuse into a block).
+  double initial_width = 0.1;
   /// Bare `!` subtracts this when set (cpfg's `line width increment`)...
   std::optional<double> width_increment;
   /// ...and otherwise multiplies by this (Houdini's thickness scale; the

@@ -87,6 +87,9 @@ struct SolidReport {
   /// invariant, containment.hpp); a point outside is an error.
   std::size_t witnesses_checked = 0;
   ValidationReport validation;  ///< of `Solid::mesh`, exactly as returned
+  /// What a maker should know although the model was built: widths that
+  /// dwarf lengths, a model that fills most of its box. One sentence each.
+  std::vector<std::string> warnings;
   StageSeconds seconds;
 };
 

@@ -9,6 +9,9 @@ namespace lsys {
 std::size_t code_point_length(std::string_view text) noexcept {
   const auto lead = static_cast<unsigned char>(text.front());
   std::size_t length = 1;
+  if (lead >= 0xF8U || (lead >= 0x80U && lead < 0xC0U)) {
+    return 1;
+  }
   if (lead >= 0xF0U) {
     length = 4;
   } else if (lead >= 0xE0U) {
@@ -16,7 +19,13 @@ std::size_t code_point_length(std::string_view text) noexcept {
   } else if (lead >= 0xC0U) {
     length = 2;
   }
-  return std::min(length, text.size());
+  // A lead byte without its continuation bytes is one invalid byte, so
+  // that it cannot swallow the characters after it.
+  if (length > text.size()) return 1;
+  for (std::size_t k = 1; k < length; ++k) {
+    if ((static_cast<unsigned char>(text[k]) & 0xC0U) != 0x80U) return 1;
+  }
+  return length;
 }
 
 SymbolId Alphabet::intern(std::string_view name) {

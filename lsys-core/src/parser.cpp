@@ -821,6 +821,7 @@ class Parser {
     std::unordered_set<std::string> given;
     for (const std::string& define : options_.defines) {
       auto source = std::make_shared<const SourceFile>("--define", define);
+      check_text(*source);
       const std::size_t equals = define.find('=');
       const std::string name =
           define.substr(0, std::min(equals, define.size()));
@@ -1385,6 +1386,7 @@ class Parser {
 
 Grammar parse_grammar(std::shared_ptr<const SourceFile> source,
                       const ParseOptions& options) {
+  check_text(*source);
   return Parser(std::move(source), options).run();
 }
 

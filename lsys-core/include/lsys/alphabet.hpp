@@ -52,8 +52,9 @@ class Alphabet {
   std::vector<std::string> long_names_;  // longest first
 };
 
-/// The byte length of the UTF-8 code point starting `text` (1 for invalid
-/// bytes, so that scanning always advances).
+/// The byte length of the UTF-8 code point starting `text`: 1 for a byte
+/// that does not start a complete sequence, so that scanning always
+/// advances and an invalid byte never swallows the characters after it.
 /// @pre `!text.empty()`.
 [[nodiscard]] std::size_t code_point_length(std::string_view text) noexcept;
 

@@ -240,6 +240,13 @@ class Parser {
     return text_.substr(r.begin, r.end - r.begin);
   }
 
+  // Finds `what` in r (and nowhere after it: a search to the end of the
+  // text for each of many lines would be quadratic); npos if absent.
+  std::size_t find_in(Range r, std::string_view what) const {
+    const std::size_t at = view(r).find(what);
+    return at == std::string_view::npos ? std::string::npos : r.begin + at;
+  }
+
   // Finds `token` at paren depth 0 in r; npos if absent.
   std::size_t find_top(Range r, std::string_view token,
                        std::size_t from = std::string::npos) const {
@@ -442,8 +449,8 @@ class Parser {
       // may, as rolls.
       if (match->key != Key::Axiom && match->key != Key::Ignore &&
           match->key != Key::Consider) {
-        const std::size_t comment = text_.find("//", value.begin);
-        if (comment < value.end) value.end = comment;
+        const std::size_t comment = find_in(value, "//");
+        if (comment != std::string::npos) value.end = comment;
       }
       settings_.push_back(SettingText{match->key, match->extra,
                                       Range{piece.begin, match->key_end},
@@ -721,8 +728,8 @@ class Parser {
       DeclaredName declared{Range{i, j}};
       while (j < names.end && is_blank(text_[j])) ++j;
       if (j < names.end && text_[j] == '(') {
-        const std::size_t close = text_.find(')', j);
-        if (close == std::string::npos || close >= names.end) {
+        const std::size_t close = find_in(Range{j, names.end}, ")");
+        if (close == std::string::npos) {
           fail(j, "unclosed '('");
         }
         const Range inside = trim(Range{j + 1, close});
@@ -803,8 +810,8 @@ class Parser {
     }
     for (const ProductionText& p : productions_) {
       const Lhs lhs = split_lhs(p.lhs);
-      std::size_t end = text_.find('(', lhs.predecessor.begin);
-      if (end > lhs.predecessor.end) end = lhs.predecessor.end;
+      std::size_t end = find_in(lhs.predecessor, "(");
+      if (end == std::string::npos) end = lhs.predecessor.end;
       const Range name = trim(Range{lhs.predecessor.begin, end});
       if (name.empty()) fail(lhs.predecessor.begin, "missing predecessor");
       for (std::size_t i = name.begin; i < name.end; ++i) {

@@ -798,6 +798,11 @@ class Parser {
     if (out.predecessor.empty()) {
       fail(lhs.begin, "missing predecessor before the arrow");
     }
+    // cpfg's grammar maps a context that is only `*` to no context at all
+    // (`* < A > * --> AF` rewrites every A); a `*` among other modules is
+    // ABOP's wildcard, one module of any name.
+    if (view(out.left) == "*") out.left = Range{};
+    if (view(out.right) == "*") out.right = Range{};
     return out;
   }
 

@@ -251,12 +251,26 @@ TEST(Parser, ParsesAHundredThousandProductionsInLinearWork) {
   EXPECT_EQ(derived(text, 3), "FFF A3");
 }
 
-TEST(Parser, ReadsAStarInAContextAsAnyModule) {
-  // ABOP fig. 1.31: p9 `* < + > * → -`.
-  EXPECT_EQ(derived("ignore: F\n\u03C9: 1F+F1-1\n* < + > * \u2192 -\n"
+TEST(Parser, ReadsALoneStarContextAsNoContextAsCpfgDoes) {
+  // cpfg: `*` as the whole context is no context, so A grows every step.
+  EXPECT_EQ(derived("n=3\naxiom: A\n* < A > * -> AF\n"), "AFFF");
+  EXPECT_EQ(derived("\u03C9: +1\n* < + \u2192 -\nn=1"), "-1");
+  EXPECT_FALSE(parse("\u03C9: A\n* < A > * -> AF\n")
+                   .productions[0]
+                   .is_context_sensitive());
+  // ABOP fig. 1.31's p9 `* < + > * → -` then turns every `+`.
+  EXPECT_EQ(derived("ignore: F\n\u03C9: +1F+F1-1\n* < + > * \u2192 -\n"
                     "* < - > * \u2192 +\nn=1"),
-            "1F-F1+1");
-  EXPECT_EQ(derived("\u03C9: +1\n* < + \u2192 -\nn=1"), "+1");
+            "-1F-F1+1");
+}
+
+TEST(Parser, ReadsAStarAmongContextModulesAsAnyOneModule) {
+  // The wildcard needs a module there: none before the first A.
+  EXPECT_EQ(derived("\u03C9: AAB\n* A < B \u2192 C\nn=1"), "AAC");
+  EXPECT_EQ(derived("\u03C9: AB\n* A < B \u2192 C\nn=1"), "AB");
+  // It matches no bracket: in A[B]C, A's right context skips the branch.
+  EXPECT_EQ(derived("\u03C9: A[B]C\nA > * C \u2192 X\nn=1"), "A[B]C");
+  EXPECT_EQ(derived("\u03C9: ABC\nA > * C \u2192 X\nn=1"), "XBC");
 }
 
 TEST(Parser, ReportsEachMistakeWithItsOwnMessage) {

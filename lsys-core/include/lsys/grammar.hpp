@@ -23,8 +23,9 @@ namespace lsys {
 inline constexpr SymbolId kBranchOpen = 0;   ///< `[`
 inline constexpr SymbolId kBranchClose = 1;  ///< `]`
 inline constexpr SymbolId kCut = 2;          ///< `%`
-/// `*`: in a context, any one module other than a bracket (ABOP fig. 1.31:
-/// `* < + > * → -`).
+/// `*`: in a context of several modules, any one module other than a
+/// bracket (`* A < B`). A context that is only `*` is no context, as in
+/// cpfg (`* < A > * → AF`), and never reaches the deriver.
 inline constexpr SymbolId kAnyModule = 3;
 
 /// A module of a predecessor or context: a name and the number of formal

@@ -190,8 +190,8 @@ class Parser {
     for (const char* name : {"@v", "@Tp", "@Ts"})
       grammar_.alphabet.intern(name);
     sort_lines();
+    evaluate_defines();  // labels are told from conditions over constants
     declare_names();
-    evaluate_defines();
     read_aliases();
     read_module_declarations();
     read_settings();
@@ -541,7 +541,7 @@ class Parser {
     if (word.empty() || i >= line.end) return;
     const std::string_view name = view(word);
     if (std::isdigit(static_cast<unsigned char>(name.front())) != 0 ||
-        strip_label(line).begin != line.begin) {
+        has_abop_label(line)) {
       return;
     }
     if (find_equals(line) == std::string::npos) {
@@ -747,21 +747,67 @@ class Parser {
 
   // --- Pass 2 -------------------------------------------------------------
 
-  // Strips an ABOP label such as `p1:` or `p_2 :`.
-  Range strip_label(Range lhs) const {
-    lhs = trim(lhs);
-    std::size_t i = lhs.begin;
-    if (i >= lhs.end || text_[i] != 'p') return lhs;
+  // True when a line starts with an ABOP label such as `p1:` or `p_2 :`
+  // (while sorting lines, before names and constants are known).
+  bool has_abop_label(Range line) const {
+    std::size_t i = line.begin;
+    if (i >= line.end || lower(text_[i]) != 'p') return false;
     ++i;
-    if (i < lhs.end && text_[i] == '_') ++i;
+    if (i < line.end && text_[i] == '_') ++i;
     const std::size_t digits = i;
-    while (i < lhs.end && std::isdigit(static_cast<unsigned char>(text_[i]))) {
+    while (i < line.end && std::isdigit(static_cast<unsigned char>(text_[i]))) {
       ++i;
     }
-    if (i == digits) return lhs;
-    while (i < lhs.end && is_blank(text_[i])) ++i;
-    if (i < lhs.end && text_[i] == ':') return trim(Range{i + 1, lhs.end});
-    return lhs;
+    if (i == digits) return false;
+    while (i < line.end && is_blank(text_[i])) ++i;
+    return i < line.end && text_[i] == ':';
+  }
+
+  bool is_label_word(Range r) const {
+    const std::string_view word = view(r);
+    return !word.empty() && std::all_of(word.begin(), word.end(), is_word_char);
+  }
+
+  // True if `r` compiles as an expression of numbers and constants only.
+  bool is_constant_condition(Range r) const {
+    try {
+      (void)parse_expression(source_, r.begin, r.end,
+                             ExpressionScope{.constants = &grammar_.constants});
+      return true;
+    } catch (const ParseError&) {
+      return false;
+    }
+  }
+
+  // Strips a label, `name:` before the production: `p1:`, `P1:`, `r:`.
+  // With two colons the first ends a label (`p1: A(x) : x>1 → …`); with
+  // one, a word before it is a label unless it could be a predecessor
+  // whose condition follows: `A : * → B` has the condition "always", and
+  // `r : t > 1 → B` is refused as ambiguous when `t > 1` is a condition
+  // over constants. A word of several characters that no `module` line
+  // declares cannot be one predecessor, so it is always a label.
+  Range strip_label(Range lhs) const {
+    lhs = trim(lhs);
+    const std::size_t colon = find_top(lhs, ":");
+    if (colon == std::string::npos) return lhs;
+    const Range label = trim(Range{lhs.begin, colon});
+    const Range rest = trim(Range{colon + 1, lhs.end});
+    if (!is_label_word(label)) return lhs;
+    if (find_top(rest, ":") != std::string::npos) return rest;
+    if (view(rest) == "*" || rest.empty()) return lhs;
+    const std::string word(view(label));
+    const bool may_be_predecessor = code_point_length(word) == word.size() ||
+                                    declared_modules_.count(word) != 0;
+    if (may_be_predecessor && is_constant_condition(rest)) {
+      fail(label.begin,
+           "ambiguous ':': '" + word +
+               "' may be a label or a predecessor with the condition '" +
+               std::string(view(rest)) +
+               "'; write 'p1: " + std::string(view(rest)) +
+               " \u2192 \u2026' for a label, 'p1: " + word + " : " +
+               std::string(view(rest)) + " \u2192 \u2026' for a condition");
+    }
+    return rest;
   }
 
   struct Lhs {

@@ -55,6 +55,36 @@ TEST(Parser, ReadsLabelsAndConditions) {
   EXPECT_FALSE(g.productions[1].condition.has_value());
 }
 
+TEST(Parser, ReadsAnyLabelBeforeTheProduction) {
+  EXPECT_EQ(derived("n=1\naxiom: A(2)\nP1: A(d) : d>0 -> A(d-1)\n"), "A(1)");
+  EXPECT_EQ(derived("n=1\naxiom: A\nr: A -> FA\n"), "FA");
+  EXPECT_EQ(derived("n=1\naxiom: A\ngrow_2 : A \u2192 FA\n"), "FA");
+  // ABOP fig. 1.31 labels its context productions over 0 and 1.
+  EXPECT_EQ(derived("n=1\naxiom: 101\np1: 1 < 0 > 1 \u2192 1\n"), "111");
+  // A label and a condition over constants.
+  EXPECT_EQ(derived("#define t 2\nn=1\naxiom: A\nr: A : t > 1 \u2192 B\n"),
+            "B");
+}
+
+TEST(Parser, ReadsAWordBeforeAStarAsAPredecessorWithACondition) {
+  const Grammar g = parse("axiom: A\nA : * \u2192 B\n");
+  ASSERT_EQ(g.productions.size(), 1U);
+  EXPECT_EQ(g.alphabet.name(g.productions[0].predecessor.symbol), "A");
+  EXPECT_FALSE(g.productions[0].condition.has_value());
+}
+
+TEST(Parser, RefusesAColonThatMayEndALabelOrStartACondition) {
+  EXPECT_EQ(located_error("#define t 2\naxiom: A\nA : t > 1 \u2192 B\n"),
+            "3:1: ambiguous ':': 'A' may be a label or a predecessor with the "
+            "condition 't > 1'; write 'p1: t > 1 \u2192 \u2026' for a label, "
+            "'p1: A : t > 1 \u2192 \u2026' for a condition");
+  // A declared name may be a predecessor too; an undeclared word may not.
+  EXPECT_EQ(
+      parse_error("module leaf\naxiom: A\nleaf : 1 \u2192 B\n").substr(0, 31),
+      "ambiguous ':': 'leaf' may be a ");
+  EXPECT_EQ(derived("n=1\naxiom: 1\nleaf : 1 \u2192 B\n"), "B");
+}
+
 TEST(Parser, StripsBlockCommentsAnywhereAndLineComments) {
   const Grammar g = parse(
       "#define a 45 /* branching angle */\n"

@@ -215,11 +215,24 @@ class Parser {
 
   // --- Pass 1: lines ------------------------------------------------------
 
-  // Replaces `/* ... */` by blanks, keeping line breaks and byte offsets.
+  // Replaces comments by blanks, keeping line breaks and byte offsets:
+  // `/* ... */` anywhere, and from a `#` that stands alone as a word (a
+  // blank or the line's start before it, a blank or the line's end after
+  // it) to the end of the line (`axiom: F   # three`), as L-Py and shells
+  // write them. A `#` that touches a module is cpfg's widen (`F#F`,
+  // `#(2)`), and one followed by a letter starts a directive.
   std::string blank_comments(const std::string& text) const {
     std::string out = text;
-    for (std::size_t i = 0; i + 1 < out.size(); ++i) {
-      if (out[i] != '/' || out[i + 1] != '*') continue;
+    const auto is_space = [](char c) {
+      return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+    };
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      if (out[i] == '#' && (i == 0 || is_space(out[i - 1])) &&
+          (i + 1 == out.size() || is_space(out[i + 1]))) {
+        for (; i < out.size() && out[i] != '\n'; ++i) out[i] = ' ';
+        continue;
+      }
+      if (out[i] != '/' || i + 1 == out.size() || out[i + 1] != '*') continue;
       const std::size_t close = out.find("*/", i + 2);
       if (close == std::string::npos) fail(i, "unterminated comment '/*'");
       for (std::size_t j = i; j < close + 2; ++j) {
@@ -531,6 +544,30 @@ class Parser {
     }
   }
 
+  // `axiom X`, `n 5`, Fractint's `Angle 6`: a setting's name and a value
+  // without `:` or `=` would otherwise become modules (`axiomX`).
+  void reject_missing_separator(Range line) const {
+    for (const Spelling& s : kSpellings) {
+      const auto end = match_words(line.begin, line.end, s.text);
+      if (!end || *end >= line.end || !is_blank(text_[*end])) continue;
+      const Range value = trim(Range{*end, line.end});
+      const std::string name(view(Range{line.begin, *end}));
+      // A single letter is a setting only before a number (`n 5`, not the
+      // modules `n F`); a declared name is a module.
+      if ((code_point_length(name) == name.size() && !is_value_text(value)) ||
+          declared_modules_.count(name) != 0) {
+        continue;
+      }
+      const std::string v(view(value));
+      std::string hint = "write '" + name + ": " + v + "'";
+      if (s.key == Key::Angle) {
+        hint += " for " + v + " degrees, or 'angle factor: " + v +
+                "' for Fractint's 360/" + v + " degrees";
+      }
+      fail(*end, "missing ':' after '" + name + "': " + hint);
+    }
+  }
+
   // A word before `:`, or a multi-letter word before `= number`, reads as a
   // setting; an ABOP label such as `p1:` does not.
   void reject_unknown_setting(Range line) const {
@@ -663,6 +700,7 @@ class Parser {
       productions_.back().rhs.push_back(line);
       return true;
     }
+    reject_missing_separator(line);
     if (!axiom_ && !has_axiom_setting_ && productions_.empty()) {
       axiom_ = line;
       return false;

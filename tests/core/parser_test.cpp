@@ -99,6 +99,30 @@ TEST(Parser, StripsBlockCommentsAnywhereAndLineComments) {
   EXPECT_EQ(to_string(derive(g), g.alphabet), "F[+(45)F]");
 }
 
+TEST(Parser, EndsALineAtAHashStandingAloneAsAWord) {
+  EXPECT_EQ(derived("n=1\naxiom: F   # comment\nF -> FF\n"), "FF");
+  EXPECT_EQ(derived("n=2 # steps\naxiom: F\t#\tcomment\nF -> F[+F] #\n"),
+            "F[+F][+F[+F]]");
+  // Touching a module, `#` is a module (cpfg's widen).
+  EXPECT_EQ(derived("n=1\naxiom: A\nA -> F#F #F # widen\n"), "F#F#F");
+  EXPECT_EQ(parse("#define a 45  # degrees\n\u03C9: F\n").constants.at("a"),
+            45.0);
+}
+
+TEST(Parser, RefusesASettingNameWithoutItsColon) {
+  EXPECT_EQ(located_error("n=1\naxiom X\nX -> FX\n"),
+            "2:6: missing ':' after 'axiom': write 'axiom: X'");
+  EXPECT_EQ(located_error("n 5\nF\n"),
+            "1:2: missing ':' after 'n': write 'n: 5'");
+  // Fractint writes the number of turns in a circle.
+  EXPECT_EQ(located_error("Angle 6\nAxiom F\n"),
+            "1:6: missing ':' after 'Angle': write 'Angle: 6' for 6 degrees, "
+            "or 'angle factor: 6' for Fractint's 360/6 degrees");
+  // Modules that happen to spell a setting are still modules.
+  EXPECT_EQ(derived("n F\n", 0), "nF");
+  EXPECT_EQ(derived("module seed\nseed F\n", 0), "seed F");
+}
+
 TEST(Parser, NeverReadsDoubleSlashInsideAProductionAsAComment) {
   // The Hilbert rules end with two rolls (seed 000).
   EXPECT_EQ(derived("A\nA \u2192 F+B//\nn=1"), "F+B//");

@@ -197,6 +197,7 @@ class Parser {
     read_settings();
     read_axiom();
     for (const ProductionText& p : productions_) read_production(p);
+    reject_letter_settings_of_modules();
     build_commands();
     for (const std::string& name : given_defines_) {
       if (used_constants_.count(name) == 0 && !file_defines_.count(name)) {
@@ -544,6 +545,59 @@ class Parser {
     }
   }
 
+  // True if every name in `r` is a constant (`#define` so far, or
+  // `--define`) and the rest is numbers and arithmetic.
+  bool looks_like_value(Range r) const {
+    if (is_value_text(r)) return true;
+    bool has_name = false;
+    for (std::size_t i = r.begin; i < r.end;) {
+      const char c = text_[i];
+      if (!is_word_char(c) || std::isdigit(static_cast<unsigned char>(c))) {
+        if (!is_blank(c) && !std::isdigit(static_cast<unsigned char>(c)) &&
+            std::string_view(".+-*/^()").find(c) == std::string_view::npos) {
+          return false;
+        }
+        ++i;
+        continue;
+      }
+      std::size_t j = i;
+      while (j < r.end && is_word_char(text_[j])) ++j;
+      const std::string_view word = text_.substr(i, j - i);
+      const bool is_constant =
+          std::any_of(defines_.begin(), defines_.end(),
+                      [&](const auto& d) { return view(d.first) == word; }) ||
+          std::any_of(options_.defines.begin(), options_.defines.end(),
+                      [&](const std::string& d) {
+                        return std::string_view(d).substr(0, d.find('=')) ==
+                               word;
+                      });
+      if (!is_constant) return false;
+      has_name = true;
+      i = j;
+    }
+    return has_name;
+  }
+
+  // Fractint writes productions with `=`: `N=O` rewrites N. A one-letter
+  // setting name (`n`, `N`, `δ`) before `=` and something other than a
+  // value (a number, or arithmetic over numbers and constants) is such a
+  // production; before a value it is a setting, and read_settings refuses
+  // it when the file also uses the letter as a module.
+  bool is_one_letter_production(Range line, const KeyMatch& key) const {
+    if (key.key == Key::Axiom || key.key == Key::Extra) return false;
+    const std::string_view name = view(trim(Range{line.begin, key.key_end}));
+    if (code_point_length(name) != name.size() ||
+        text_[key.value_begin - 1] != '=') {
+      return false;
+    }
+    Range value{key.value_begin, split_top(line, ',').front().end};
+    if (const std::size_t comment = find_in(value, "//");
+        comment != std::string::npos) {
+      value.end = comment;  // `n=2 // two steps`
+    }
+    return !looks_like_value(trim(value));
+  }
+
   // `axiom X`, `n 5`, Fractint's `Angle 6`: a setting's name and a value
   // without `:` or `=` would otherwise become modules (`axiomX`).
   void reject_missing_separator(Range line) const {
@@ -667,7 +721,8 @@ class Parser {
 
   bool sort_content(Range line, bool indented, bool after_production) {
     if (section_ == Section::Aliases) {
-      if (match_key(line)) {
+      if (const auto key = match_key(line);
+          key && !is_one_letter_production(line, *key)) {
         add_settings(line);
       } else {
         alias_lines_.push_back(line);
@@ -689,7 +744,8 @@ class Parser {
         return false;
       }
     }
-    if (const auto key = match_key(line)) {
+    if (const auto key = match_key(line);
+        key && !is_one_letter_production(line, *key)) {
       has_axiom_setting_ = has_axiom_setting_ || key->key == Key::Axiom;
       add_settings(line);
       return false;
@@ -1308,6 +1364,12 @@ class Parser {
                          setting.value.begin});
         continue;
       }
+      std::size_t separator = setting.key_range.end;
+      while (is_blank(text_[separator])) ++separator;
+      if (text_[separator] == '=' && setting.key != Key::Axiom &&
+          code_point_length(key_text) == key_text.size()) {
+        letter_settings_.push_back(setting);
+      }
       const int id = static_cast<int>(setting.key);
       if (const auto it = seen.find(id); it != seen.end()) {
         fail(setting.key_range.begin,
@@ -1428,6 +1490,22 @@ class Parser {
     }
   }
 
+  // `N=2` where the file also has a module N reads both as the setting n
+  // and as Fractint's production N → 2.
+  void reject_letter_settings_of_modules() const {
+    for (const SettingText& setting : letter_settings_) {
+      const std::string letter(view(setting.key_range));
+      if (!grammar_.alphabet.find(letter)) continue;
+      const std::string value(view(setting.value));
+      fail(setting.key_range.begin,
+           "ambiguous '" + letter + "=" + value + "': it may set '" + letter +
+               "' or rewrite the module '" + letter +
+               "' that this file uses; write '" + letter + ": " + value +
+               "' for the setting, '" + letter + " \u2192 " + value +
+               "' for a production");
+    }
+  }
+
   glm::dvec3 vector3(Range value) const {
     Range r = value;
     if (view(r).starts_with("(") && view(r).ends_with(")")) {
@@ -1465,6 +1543,7 @@ class Parser {
   Section section_ = Section::Productions;
   std::vector<ProductionText> productions_;
   std::vector<SettingText> settings_;
+  std::vector<SettingText> letter_settings_;  // `n=2`: one letter and `=`
   std::vector<std::pair<Range, Range>> defines_;
   std::vector<Range> module_lines_;
   std::vector<Range> alias_lines_;

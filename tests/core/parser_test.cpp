@@ -273,6 +273,25 @@ TEST(Parser, AcceptsDegreeSignsFromPdfs) {
   }
 }
 
+TEST(Parser, ReadsAOneLetterNameBeforeEqualsAndModulesAsAProduction) {
+  // Fractint's `N=O` beside the setting n=2, either way round.
+  EXPECT_EQ(derived("n=2\nN=O\naxiom: N\n"), "O");
+  EXPECT_EQ(derived("axiom: N\nN=OF\nn=2\n"), "OF");
+  EXPECT_EQ(derived("n=2\naxiom: D\nD=1\n"), "1");
+  // Before a number or arithmetic over constants, it is a setting.
+  EXPECT_EQ(
+      parse("#define k 3\nN = k*2 // steps\nF\n").settings.derivation_length,
+      6);
+}
+
+TEST(Parser, RefusesAOneLetterSettingOfALetterThatIsAModule) {
+  EXPECT_EQ(located_error("N=2\naxiom: NF\n"),
+            "1:1: ambiguous 'N=2': it may set 'N' or rewrite the module 'N' "
+            "that this file uses; write 'N: 2' for the setting, 'N \u2192 2' "
+            "for a production");
+  EXPECT_EQ(parse("n: 2\naxiom: nF\n").settings.derivation_length, 2);
+}
+
 TEST(Parser, AllowsTrailingCommentsOnNumericSettings) {
   const Grammar g = parse("n=2 // two steps\n\u03C9: F//F\n");
   EXPECT_EQ(g.settings.derivation_length, 2);

@@ -1120,8 +1120,10 @@ class Parser {
     std::vector<Range> arguments;
   };
 
-  std::vector<RawModule> tokenize(Range r) {
-    std::vector<RawModule> out;
+  // Calls `each` with every module of r in turn, so that a long axiom is
+  // never held as tokens besides its successor.
+  template <typename Each>
+  void tokenize_each(Range r, const Each& each) {
     std::size_t i = r.begin;
     for (;;) {
       while (i < r.end && is_blank(text_[i])) ++i;
@@ -1150,19 +1152,27 @@ class Parser {
         }
         i = close + 1;
       }
-      out.push_back(std::move(m));
+      each(std::move(m));
     }
+  }
+
+  std::vector<RawModule> tokenize(Range r) {
+    std::vector<RawModule> out;
+    tokenize_each(r, [&](RawModule&& m) { out.push_back(std::move(m)); });
     return out;
   }
 
-  void check_brackets(
-      const std::vector<std::pair<SymbolId, std::size_t>>& modules,
-      bool allow_unclosed) const {
+  // Brackets must balance; `symbol_at(i)` and `offset_at(i)` give module i.
+  template <typename SymbolAt, typename OffsetAt>
+  void check_brackets(std::size_t count, const SymbolAt& symbol_at,
+                      const OffsetAt& offset_at, bool allow_unclosed) const {
     std::vector<std::size_t> open;
-    for (const auto& [symbol, offset] : modules) {
-      if (symbol == kBranchOpen) open.push_back(offset);
-      if (symbol == kBranchClose) {
-        if (open.empty()) fail(offset, "unbalanced ']': no '[' before it");
+    for (std::size_t i = 0; i < count; ++i) {
+      if (symbol_at(i) == kBranchOpen) open.push_back(offset_at(i));
+      if (symbol_at(i) == kBranchClose) {
+        if (open.empty()) {
+          fail(offset_at(i), "unbalanced ']': no '[' before it");
+        }
         open.pop_back();
       }
     }
@@ -1171,24 +1181,30 @@ class Parser {
     }
   }
 
-  std::vector<ModuleTemplate> modules(const std::vector<Range>& ranges,
-                                      const ExpressionScope& scope) {
-    std::vector<ModuleTemplate> out;
+  Successor modules(const std::vector<Range>& ranges,
+                    const ExpressionScope& scope) {
+    Successor out;
+    // A module takes at least one byte: reserving that many is never too
+    // little, and spares the copies of growing a long axiom.
+    std::size_t bytes = 0;
+    for (const Range& r : ranges) bytes += r.end - r.begin;
+    out.reserve(bytes);
     for (const Range& r : ranges) {
-      for (RawModule& raw : tokenize(r)) {
+      tokenize_each(r, [&](RawModule&& raw) {
         check_arity(raw.symbol, static_cast<int>(raw.arguments.size()),
                     raw.offset);
-        ModuleTemplate m{raw.symbol, {}, raw.offset};
+        std::vector<Expression> parameters;
         for (const Range& arg : raw.arguments) {
-          m.parameters.push_back(
+          parameters.push_back(
               parse_expression(source_, arg.begin, arg.end, scope));
         }
-        out.push_back(std::move(m));
-      }
+        out.push_back(raw.symbol, std::move(parameters), raw.offset);
+      });
     }
-    std::vector<std::pair<SymbolId, std::size_t>> shape;
-    for (const ModuleTemplate& m : out) shape.emplace_back(m.symbol, m.offset);
-    check_brackets(shape, false);
+    out.shrink_to_fit();
+    check_brackets(
+        out.size(), [&](std::size_t i) { return out.symbols()[i]; },
+        [&](std::size_t i) { return out.offset(i); }, false);
     return out;
   }
 
@@ -1196,7 +1212,6 @@ class Parser {
                                      bool allow_brackets,
                                      const char* bracket_error) {
     std::vector<PatternModule> out;
-    std::vector<std::pair<SymbolId, std::size_t>> shape;
     for (const RawModule& raw : tokenize(r)) {
       const bool bracket =
           raw.symbol == kBranchOpen || raw.symbol == kBranchClose;
@@ -1228,9 +1243,10 @@ class Parser {
       }
       out.push_back(PatternModule{
           raw.symbol, static_cast<int>(raw.arguments.size()), raw.offset});
-      shape.emplace_back(raw.symbol, raw.offset);
     }
-    check_brackets(shape, true);
+    check_brackets(
+        out.size(), [&](std::size_t i) { return out[i].symbol; },
+        [&](std::size_t i) { return out[i].offset; }, true);
     return out;
   }
 
@@ -1282,7 +1298,7 @@ class Parser {
     std::string joined;
     for (const Range& r : rhs) joined += view(trim(r));
     if (joined == "*" || joined == "\u03B5") rhs.clear();
-    p.successor = Successor(modules(rhs, scope));
+    p.successor = modules(rhs, scope);
     if (text.section != Section::Productions) {
       const char* what = text.section == Section::Decomposition
                              ? "decomposition"
@@ -1317,7 +1333,7 @@ class Parser {
     }
     const ExpressionScope scope{.constants = &grammar_.constants,
                                 .used_constants = &used_constants_};
-    grammar_.axiom = Successor(modules({*axiom_}, scope));
+    grammar_.axiom = modules({*axiom_}, scope);
     grammar_.axiom_offset = axiom_->begin;
   }
 
@@ -1405,6 +1421,7 @@ class Parser {
           break;
         case Key::Step:
           s.step = number(v);
+          s.step_offset = v.begin;
           break;
         case Key::Width:
           s.initial_width = positive(v, true);
@@ -1430,7 +1447,7 @@ class Parser {
           s.width_decrement_per_generation = 2.0 * number(v);
           break;
         case Key::Color:
-          s.initial_color = static_cast<int>(whole(v, 1 << 20));
+          s.initial_color = static_cast<int>(whole(v, kMaxColorIndex));
           break;
         case Key::Tropism:
           s.tropism = vector3(v);
@@ -1561,6 +1578,12 @@ class Parser {
 
 Grammar parse_grammar(std::shared_ptr<const SourceFile> source,
                       const ParseOptions& options) {
+  // Successors keep 32-bit source places; files are far smaller
+  // (kMaxSourceBytes), texts given in memory must be too.
+  if (source->text().size() > 0xFFFFFFFFU) {
+    throw ParseError(Diagnostic{.file = source->name(),
+                                .message = "the text is longer than 4 GiB"});
+  }
   check_text(*source);
   return Parser(std::move(source), options).run();
 }

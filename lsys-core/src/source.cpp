@@ -76,10 +76,12 @@ std::shared_ptr<const SourceFile> load_source(const std::filesystem::path& path,
         .file = path.string(),
         .message = std::string("cannot read file: ") + std::strerror(errno)});
   }
-  auto source = std::make_shared<const SourceFile>(path.string(), text);
-  if (text.size() > max_bytes) {
+  const std::size_t read = text.size();
+  auto source =
+      std::make_shared<const SourceFile>(path.string(), std::move(text));
+  if (read > max_bytes) {
     // The place where the limit falls, so that a runaway line is shown.
-    const std::size_t removed = text.size() - source->text().size();
+    const std::size_t removed = read - source->text().size();
     throw error_at(*source, max_bytes - std::min(max_bytes, removed),
                    "the file is larger than " + std::to_string(max_bytes) +
                        " bytes, the limit for a .ls file");

@@ -282,7 +282,11 @@ int run_build(const BuildCommand& command) {
   options.print = print_settings(grammar, command.print);
   options.unite = !command.no_union;
   options.decimate = !command.no_decimate;
-  options.max_triangles = command.max_triangles;
+  if (command.max_triangles) {
+    // A closed mesh has at least 4 triangles; indices are 32 bits.
+    options.max_triangles = static_cast<std::size_t>(parse_whole_number(
+        *command.max_triangles, "--max-triangles", 4, 4294967295U));
+  }
   // 3MF and STL store floats; OFF and OBJ are written to full precision.
   options.float_coordinates =
       format != MeshFormat::Off && format != MeshFormat::Obj;

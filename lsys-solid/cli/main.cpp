@@ -71,9 +71,9 @@ int main(int argc, char** argv) {
       "keep every triangle of the union (decimation is on by default, within "
       "--tolerance)");
   app.add_option("--max-triangles", build.max_triangles,
-                 "decimate to at most N triangles, beyond --tolerance if "
-                 "need be (never at the cost of validity)")
-      ->check(CLI::PositiveNumber)
+                 "decimate to at most N triangles (4 to 4294967295), beyond "
+                 "--tolerance if need be (never at the cost of validity)")
+      ->type_name("N")
       ->excludes(no_decimate);
   lsolid::cli::add_print_options(app, build.print);
 

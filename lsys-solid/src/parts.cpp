@@ -1139,7 +1139,9 @@ class PartBuilder {
 int tube_sides(double radius_mm, double tolerance_mm) {
   if (tolerance_mm >= radius_mm) return 6;
   const double step = std::acos(1.0 - tolerance_mm / radius_mm);
-  return std::clamp(static_cast<int>(std::ceil(kPi / step)), 6, 128);
+  // Clamped before converting: a tolerance far below the radius makes the
+  // step 0 and the quotient infinite, which no int holds.
+  return static_cast<int>(std::clamp(std::ceil(kPi / step), 6.0, 128.0));
 }
 
 Box bounds(const std::vector<Part>& parts) {

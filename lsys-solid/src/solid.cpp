@@ -275,6 +275,10 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   tell("skeleton", 0.0);
   const lsys::Skeleton skeleton =
       lsys::interpret(grammar, options.derivation, options.interpretation);
+  // Drawing nothing is a mistake in the input, placed where it is made.
+  if (skeleton.segments.empty() && skeleton.polygons.empty()) {
+    throw lsys::nothing_drawn_error(grammar, skeleton);
+  }
   report.segments = skeleton.segments.size();
   report.polygons = skeleton.polygons.size();
   report.dropped.degenerate_polygons = skeleton.degenerate_polygons;

@@ -36,6 +36,12 @@ double parse_length_mm(std::string_view text, const std::string& what) {
       throw lsys::error_at(source, begin,
                            "a length must be a positive, finite number");
     }
+    // No printer is a kilometre wide; `1e308in` would not even be finite.
+    constexpr double kMostMm = 1e6;
+    if (value * factor > kMostMm) {
+      throw lsys::error_at(source, begin,
+                           "a length must be at most 1000000 mm (1 km)");
+    }
     return value * factor;
   }
   throw lsys::error_at(

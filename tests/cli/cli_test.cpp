@@ -8,6 +8,7 @@
 #include <fstream>
 #include <regex>
 #include <string>
+#include <vector>
 
 #include "support/run_command.hpp"
 
@@ -106,6 +107,85 @@ TEST(Cli, ReportsABadDefineWithACaret) {
                   kSource / "printables");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "--define:1:4: error: bad number '0.5.5'\nr2=0.5.5\n   ^\n");
+}
+
+TEST(Cli, RefusesAnyNumericOptionOutOfItsRangeWithAPlainMessage) {
+  // `-1` wrapped to 1.8e19 and disabled the limit; `--max-triangles 0`
+  // printed a 300-digit range.
+  struct Case {
+    std::string args;
+    std::string option;
+    std::string range;
+    std::string value;
+  };
+  const std::string most = "9007199254740992";
+  for (const Case& c : std::vector<Case>{
+           {"derive --max-segments -1", "--max-segments", "1 to " + most, "-1"},
+           {"derive --max-modules -1", "--max-modules", "1 to " + most, "-1"},
+           {"skeleton --max-segments 0", "--max-segments", "1 to " + most, "0"},
+           {"derive --max-modules 18446744073709551616", "--max-modules",
+            "1 to " + most, "18446744073709551616"},
+           {"derive -n 1e300", "--derivation-length", "0 to 10000", "1e300"},
+           {"skeleton -n 3.5", "--derivation-length", "0 to 10000", "3.5"},
+           {"derive --seed -1", "--seed", "0 to " + most, "-1"},
+           {"derive --seed 9007199254740993", "--seed", "0 to " + most,
+            "9007199254740993"},
+           {"derive --max-memory 0", "--max-memory", "1 to 1073741824", "0"},
+           {"--max-triangles 0", "--max-triangles", "4 to 4294967295", "0"},
+           {"--max-triangles 1e3", "--max-triangles", "4 to 4294967295",
+            "1e3"}}) {
+    const std::string command = c.args.starts_with("-")
+                                    ? "hilbert-cube.ls " + c.args + " -o x.stl"
+                                    : c.args.substr(0, c.args.find(' ')) +
+                                          " hilbert-cube.ls" +
+                                          c.args.substr(c.args.find(' '));
+    const auto r =
+        run_command(lsolid() + " " + command, kSource / "printables");
+    EXPECT_EQ(r.exit_code, 2) << command;
+    EXPECT_EQ(r.err, c.option + ":1:1: error: expected a whole number from " +
+                         c.range + ", not '" + c.value + "'\n" + c.value +
+                         "\n^\n")
+        << command;
+    EXPECT_EQ(r.out, "") << command;
+  }
+  EXPECT_FALSE(std::filesystem::exists(kSource / "printables/x.stl"));
+  const auto wall =
+      run_command(lsolid() + " skeleton hilbert-cube.ls --wall 1e308in",
+                  kSource / "printables");
+  EXPECT_EQ(wall.exit_code, 2);
+  EXPECT_EQ(wall.err,
+            "--wall:1:1: error: a length must be at most 1000000 mm (1 km)\n"
+            "1e308in\n^\n");
+}
+
+TEST(Cli, ReadsALongAxiomInLittleMemoryAndRefusesAFileOverTheLimit) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("lsolid_long_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  { std::ofstream(dir / "tiny.ls") << "axiom: F\n"; }
+  {
+    std::ofstream out(dir / "long.ls");
+    out << "axiom: " << std::string(10'000'000, 'F') << "\n";
+  }
+  // A 10 MB axiom took 1.1 GB (110 bytes a byte); now under 25 a byte.
+  const long tiny = testing::peak_rss_kib(
+      lsolid() + " derive tiny.ls --stats > /dev/null", dir);
+  const long peak = testing::peak_rss_kib(
+      lsolid() + " derive long.ls --stats > /dev/null", dir);
+  ASSERT_GT(tiny, 0);
+  EXPECT_LT(peak - tiny, 25L * 10'000'000L / 1024L) << peak << " " << tiny;
+  {
+    std::ofstream out(dir / "huge.ls");
+    out << "n=1\naxiom: " << std::string(17U << 20U, 'F') << "\n";
+  }
+  const auto huge = run_command(lsolid() + " huge.ls -o out.stl", dir);
+  EXPECT_EQ(huge.exit_code, 2);
+  EXPECT_EQ(huge.err,
+            "huge.ls:2:16777213: error: the file is larger than 16777216 "
+            "bytes, the limit for a .ls file\n\u2026" +
+                std::string(51, 'F') + "\n" + std::string(51, ' ') + "^\n");
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.stl"));
+  std::filesystem::remove_all(dir);
 }
 
 class Build : public ::testing::Test {
@@ -477,11 +557,14 @@ TEST_F(Build, RefusesUnknownFormatsAndEmptyModels) {
             "--output: error: unknown output format '.ply': use .stl, .off, "
             ".scad, .3mf or .obj\n");
   { std::ofstream(dir_ / "empty.ls") << "\u03C9: A+B\n"; }
+  // Drawing nothing is bad input, placed at the axiom.
   const auto empty = run_command(lsolid() + " empty.ls", dir_);
-  EXPECT_EQ(empty.exit_code, 3);
+  EXPECT_EQ(empty.exit_code, 2);
   EXPECT_EQ(empty.err,
-            "error: nothing to build: the L-system draws no segment and no "
-            "polygon\n");
+            "empty.ls:1:4: error: nothing to build: the L-system draws no "
+            "segment and no polygon; modules without a turtle meaning draw "
+            "nothing (map them with an alias block, e.g. 'aliases: Fl=F "
+            "Fr=F')\n\u03C9: A+B\n   ^\n");
 }
 
 TEST_F(Build, ReadsPrintSettingsFromTheFile) {

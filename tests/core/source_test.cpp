@@ -10,6 +10,7 @@
 #include <string>
 
 #include "lsys/diagnostic.hpp"
+#include "support/core_helpers.hpp"
 
 namespace lsys {
 namespace {
@@ -45,14 +46,8 @@ TEST(SourceFile, ReportsAMissingFileWithItsName) {
 
 // `line:column: message` of check_text's error, or "no error".
 std::string text_error(const std::string& text) {
-  try {
-    check_text(SourceFile("t.ls", text));
-  } catch (const ParseError& e) {
-    const Diagnostic& d = e.diagnostic();
-    return std::to_string(d.line) + ":" + std::to_string(d.column) + ": " +
-           d.message;
-  }
-  return "no error";
+  return testing::located_error_of(
+      [&] { check_text(SourceFile("t.ls", text)); });
 }
 
 TEST(SourceFile, AcceptsUtf8TextWithOrWithoutAByteOrderMark) {

@@ -165,6 +165,15 @@ int run_check(const CheckCommand& command) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
   }
+  // A file without a triangle is nothing to check, not a printable (or an
+  // unprintable) mesh with bounds of -1e300.
+  std::size_t triangles = 0;
+  for (const ColoredMesh& v : volumes) triangles += v.mesh.triangles.size();
+  if (triangles == 0) {
+    std::fprintf(stderr, "error: %s: the file holds no triangles\n",
+                 command.file.c_str());
+    return 2;
+  }
   if (volumes.size() > 1) return check_volumes(command, volumes);
   const ValidationReport report =
       validate(volumes.empty() ? TriangleMesh() : volumes.front().mesh);

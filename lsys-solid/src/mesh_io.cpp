@@ -6,8 +6,10 @@
 // is encoded by lib3mf in mesh_3mf.cpp.
 #include "lsolid/mesh_io.hpp"
 
+#include <array>
 #include <cctype>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -82,26 +84,115 @@ TriangleMesh read_binary_stl(const std::string& data,
   return soup.take();
 }
 
-TriangleMesh read_ascii_stl(const std::string& data,
-                            const std::filesystem::path& path) {
-  std::istringstream in(data);
-  std::string word;
-  SoupBuilder soup;
-  std::array<glm::dvec3, 3> corners;
-  int corner = 0;
-  while (in >> word) {
-    if (word != "vertex") continue;
-    glm::dvec3 p;
-    if (!(in >> p.x >> p.y >> p.z)) fail(path, "bad vertex in ASCII STL");
-    corners[static_cast<std::size_t>(corner++)] = p;
-    if (corner == 3) {
-      soup.add(corners);
-      corner = 0;
+// A word of a file as a message may quote it: at most 32 characters, and
+// bytes a terminal would act on (binary junk) as \xHH.
+std::string quote_word(std::string_view word) {
+  std::string out = "'";
+  for (std::size_t i = 0; i < word.size() && i < 32; ++i) {
+    const auto c = static_cast<unsigned char>(word[i]);
+    if (c < 0x20U || c >= 0x7FU) {
+      std::array<char, 8> hex{};
+      std::snprintf(hex.data(), hex.size(), "\\x%02X", c);
+      out += hex.data();
+    } else {
+      out += static_cast<char>(c);
     }
   }
-  if (corner != 0)
-    fail(path, "a facet of the ASCII STL has fewer than 3 vertices");
-  return soup.take();
+  return out + (word.size() > 32 ? "...'" : "'");
+}
+
+// ASCII STL word by word, as its grammar has it: `solid name`, then per
+// facet `facet normal nx ny nz`, `outer loop`, three `vertex x y z`,
+// `endloop`, `endfacet`, and `endsolid name` (several solids may follow
+// one another). Anything else is refused with its line, rather than
+// skipped: a file of nonsense after `solid` read as no triangles at all.
+class AsciiStlReader {
+ public:
+  AsciiStlReader(std::string_view data, const std::filesystem::path& path)
+      : data_(data), path_(path) {}
+
+  TriangleMesh read() {
+    SoupBuilder soup;
+    bool has_solid = false;
+    for (std::string_view word = next(); !word.empty() || !has_solid;
+         word = next()) {
+      if (word != "solid") refuse("'solid'", word);
+      has_solid = true;
+      skip_line();  // the name
+      for (;;) {
+        word = next();
+        if (word == "endsolid") break;
+        if (word != "facet") refuse("'facet' or 'endsolid'", word);
+        expect("normal");
+        // Normals are recomputed; some exporters write nan there.
+        for (int k = 0; k < 3; ++k) (void)number(false);
+        expect("outer");
+        expect("loop");
+        std::array<glm::dvec3, 3> corners;
+        for (glm::dvec3& p : corners) {
+          expect("vertex");
+          p = {number(true), number(true), number(true)};
+        }
+        expect("endloop");
+        expect("endfacet");
+        soup.add(corners);
+      }
+      skip_line();
+    }
+    return soup.take();
+  }
+
+ private:
+  std::string_view next() {
+    while (at_ < data_.size() &&
+           std::isspace(static_cast<unsigned char>(data_[at_])) != 0) {
+      if (data_[at_++] == '\n') ++line_;
+    }
+    const std::size_t begin = at_;
+    while (at_ < data_.size() &&
+           std::isspace(static_cast<unsigned char>(data_[at_])) == 0) {
+      ++at_;
+    }
+    return data_.substr(begin, at_ - begin);
+  }
+  void skip_line() {
+    while (at_ < data_.size() && data_[at_] != '\n') ++at_;
+  }
+  [[noreturn]] void refuse(const std::string& expected,
+                           std::string_view word) const {
+    if (word.empty()) {
+      fail(path_, "the file ends where " + expected + " should follow");
+    }
+    fail(path_, "line " + std::to_string(line_) + ": expected " + expected +
+                    ", not " + quote_word(word));
+  }
+  void expect(std::string_view word) {
+    const std::string_view got = next();
+    // (Appending piecewise avoids a GCC 12 -Wrestrict false alarm.)
+    if (got != word) refuse(std::string(1, '\'').append(word).append("'"), got);
+  }
+  double number(bool must_be_finite) {
+    const std::string_view word = next();
+    double value = 0.0;
+    const auto [end, error] =
+        std::from_chars(word.data(), word.data() + word.size(), value);
+    if (word.empty() || error != std::errc() ||
+        end != word.data() + word.size() ||
+        (must_be_finite && !std::isfinite(value))) {
+      refuse(must_be_finite ? "a finite number" : "a number", word);
+    }
+    return value;
+  }
+
+  std::string_view data_;
+  const std::filesystem::path& path_;
+  std::size_t at_ = 0;
+  std::size_t line_ = 1;
+};
+
+TriangleMesh read_ascii_stl(const std::string& data,
+                            const std::filesystem::path& path) {
+  return AsciiStlReader(data, path).read();
 }
 
 TriangleMesh read_off(const std::string& data,
@@ -109,11 +200,28 @@ TriangleMesh read_off(const std::string& data,
   std::istringstream in(data);
   std::string header;
   in >> header;
-  std::size_t vertex_count = 0;
-  std::size_t face_count = 0;
-  std::size_t edge_count = 0;
-  if (!(in >> vertex_count >> face_count >> edge_count)) {
-    fail(path, "bad OFF header");
+  if (header != "OFF") {
+    fail(path,
+         "not an OFF file: it starts with " +
+             (header.empty() ? std::string("nothing") : quote_word(header)) +
+             ", not 'OFF'");
+  }
+  long long counts[3] = {0, 0, 0};
+  if (!(in >> counts[0] >> counts[1] >> counts[2]) || counts[0] < 0 ||
+      counts[1] < 0 || counts[2] < 0) {
+    fail(path,
+         "bad OFF header: expected the counts of vertices, faces and "
+         "edges");
+  }
+  // A vertex takes at least 6 bytes and a face 8: counts beyond what the
+  // file can hold are refused before anything is allocated for them.
+  const auto vertex_count = static_cast<std::size_t>(counts[0]);
+  const auto face_count = static_cast<std::size_t>(counts[1]);
+  if (vertex_count > data.size() / 6 || face_count > data.size() / 8) {
+    fail(path, "bad OFF header: " + std::to_string(vertex_count) +
+                   " vertices and " + std::to_string(face_count) +
+                   " faces do not fit in a file of " +
+                   std::to_string(data.size()) + " bytes");
   }
   TriangleMesh mesh;
   mesh.vertices.resize(vertex_count);
@@ -121,16 +229,18 @@ TriangleMesh read_off(const std::string& data,
     if (!(in >> p.x >> p.y >> p.z)) fail(path, "bad OFF vertex");
   }
   for (std::size_t f = 0; f < face_count; ++f) {
-    std::size_t n = 0;
-    if (!(in >> n) || n < 3) fail(path, "bad OFF face " + std::to_string(f));
-    std::vector<std::uint32_t> polygon(n);
+    long long n = 0;
+    if (!(in >> n) || n < 3 || static_cast<std::size_t>(n) > data.size()) {
+      fail(path, "bad OFF face " + std::to_string(f));
+    }
+    std::vector<std::uint32_t> polygon(static_cast<std::size_t>(n));
     for (std::uint32_t& v : polygon) {
       if (!(in >> v) || v >= vertex_count) {
         fail(path, "bad vertex index in OFF face " + std::to_string(f));
       }
     }
     in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
-    for (std::size_t k = 1; k + 1 < n; ++k) {  // fan: OFF faces are convex
+    for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {  // a convex fan
       mesh.triangles.push_back({polygon[0], polygon[k], polygon[k + 1]});
     }
   }
@@ -408,7 +518,19 @@ std::string encode_obj(const std::vector<ColoredMesh>& volumes,
   return out;
 }
 
+// Only regular files are read: a FIFO would block and a device such as
+// /dev/zero never end.
+void refuse_special_file(const std::filesystem::path& path) {
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (!error && std::filesystem::exists(status) &&
+      !std::filesystem::is_regular_file(status)) {
+    fail(path, "cannot read: not a regular file");
+  }
+}
+
 std::string read_file(const std::filesystem::path& path) {
+  refuse_special_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, std::string("cannot read: ") + std::strerror(errno));
   std::ostringstream buffer;
@@ -441,12 +563,22 @@ TriangleMesh read_mesh(const std::filesystem::path& path) {
   if (ext == ".3mf" || ext == ".obj") return merged(read_colored(path));
   const std::string data = read_file(path);
   if (data.starts_with("OFF") || ext == ".off") return read_off(data, path);
+  std::uint32_t count = 0;
   if (data.size() >= 84) {
-    std::uint32_t count = 0;
     std::memcpy(&count, data.data() + 80, 4);
     if (data.size() == 84 + 50ULL * count) return read_binary_stl(data, path);
   }
-  if (data.starts_with("solid")) return read_ascii_stl(data, path);
+  // Binary STL headers often start with "solid" too, but hold NUL bytes.
+  const bool is_text =
+      data.substr(0, std::min<std::size_t>(data.size(), 1024)).find('\0') ==
+      std::string::npos;
+  if (data.starts_with("solid") && is_text) return read_ascii_stl(data, path);
+  if (data.size() >= 84 && !is_text) {
+    fail(path,
+         "a damaged binary STL: its header counts " + std::to_string(count) +
+             " triangles (" + std::to_string(84 + 50ULL * count) +
+             " bytes), the file has " + std::to_string(data.size()) + " bytes");
+  }
   fail(path, "not an STL or OFF file");
 }
 
@@ -454,6 +586,7 @@ std::vector<ColoredMesh> read_colored(const std::filesystem::path& path) {
   const std::string ext = lower_extension(path);
   if (ext == ".3mf") {
     if (!std::filesystem::exists(path)) fail(path, "cannot read: no such file");
+    refuse_special_file(path);
     return decode_3mf(path);
   }
   if (ext == ".obj") return read_obj(read_file(path), path);

@@ -1,6 +1,9 @@
 // Copyright 2026 the lsolid authors
 // SPDX-License-Identifier: MIT
 #include <gtest/gtest.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/un.h>
 
 #include <algorithm>
 #include <array>
@@ -8,6 +11,7 @@
 #include <fstream>
 #include <regex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "support/run_command.hpp"
@@ -393,6 +397,89 @@ TEST_F(Build, LeavesNothingBehindOnBadInput) {
     ++entries;
   }
   EXPECT_EQ(entries, 2U);
+}
+
+TEST_F(Build, ExitsWithFourWhenTheReportCannotBeWritten) {
+  // A build and check exited 0 with the report lost.
+  { std::ofstream(dir_ / "f.ls") << "\u03C9: F\n"; }
+  ASSERT_EQ(run_command(lsolid() + " f.ls -q", dir_).exit_code, 0);
+  for (const std::string command :
+       {" f.ls", " f.ls --json", " check f.stl", " check f.stl --json",
+        " derive f.ls", " skeleton f.ls --json"}) {
+    // The subshell's own output is captured; lsolid's goes to /dev/full.
+    // (Appending piecewise avoids a GCC 12 -Wrestrict false alarm.)
+    const auto r =
+        run_command(std::string("(").append(lsolid()).append(command).append(
+                        " > /dev/full)"),
+                    dir_);
+    EXPECT_EQ(r.exit_code, 4) << command;
+    EXPECT_EQ(r.err,
+              "error: cannot write to standard output: No space left on "
+              "device\n")
+        << command;
+  }
+}
+
+TEST_F(Build, RefusesSpecialFilesAsOutputsBeforeBuilding) {
+  // Each was replaced by a regular file.
+  { std::ofstream(dir_ / "f.ls") << "\u03C9: F\n"; }
+  ASSERT_EQ(::mkfifo((dir_ / "fifo.stl").c_str(), 0644), 0);
+  ASSERT_EQ(::mkfifo((dir_ / "m.mtl").c_str(), 0644), 0);
+  ASSERT_EQ(::mkfifo((dir_ / "p.png").c_str(), 0644), 0);
+  std::filesystem::create_directory(dir_ / "folder.stl");
+  std::filesystem::create_symlink("/dev/null", dir_ / "null.stl");
+  const int sock = ::socket(AF_UNIX, SOCK_STREAM, 0);
+  sockaddr_un address{};
+  address.sun_family = AF_UNIX;
+  const std::string socket_path = (dir_ / "sock.stl").string();
+  ASSERT_LT(socket_path.size(), sizeof(address.sun_path));
+  std::copy(socket_path.begin(), socket_path.end(), address.sun_path);
+  ASSERT_EQ(::bind(sock, reinterpret_cast<const sockaddr*>(&address),
+                   sizeof(address)),
+            0);
+  for (const auto& [args, message] :
+       std::vector<std::pair<std::string, std::string>>{
+           {"-o fifo.stl",
+            "--output: error: 'fifo.stl' is a FIFO (named pipe); "
+            "lsolid writes only regular files\n"},
+           {"-o folder.stl",
+            "--output: error: 'folder.stl' is a directory; "
+            "lsolid writes only regular files\n"},
+           {"-o null.stl",
+            "--output: error: 'null.stl' is a link to a device; "
+            "lsolid writes only regular files\n"},
+           {"-o sock.stl",
+            "--output: error: 'sock.stl' is a socket; lsolid "
+            "writes only regular files\n"},
+           {"-o m.obj",
+            "--output: error: 'm.mtl' is a FIFO (named pipe); "
+            "lsolid writes only regular files\n"},
+           {"--preview p.png",
+            "--preview: error: 'p.png' is a FIFO (named "
+            "pipe); lsolid writes only regular files\n"}}) {
+    const auto r = run_command(lsolid() + " f.ls " + args, dir_);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_EQ(r.err, message) << args;
+    EXPECT_EQ(r.out, "") << args;  // refused before building
+  }
+  ::close(sock);
+  EXPECT_TRUE(std::filesystem::is_fifo(dir_ / "fifo.stl"));
+  EXPECT_TRUE(std::filesystem::is_fifo(dir_ / "m.mtl"));
+  EXPECT_TRUE(std::filesystem::is_directory(dir_ / "folder.stl"));
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
+  EXPECT_TRUE(std::filesystem::is_socket(dir_ / "sock.stl"));
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "f.stl"));
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "m.obj"));
+}
+
+TEST_F(Build, WritesThroughASymbolicLinkToItsRegularFile) {
+  { std::ofstream(dir_ / "f.ls") << "\u03C9: F\n"; }
+  { std::ofstream(dir_ / "real.stl") << "old"; }
+  std::filesystem::create_symlink("real.stl", dir_ / "link.stl");
+  const auto r = run_command(lsolid() + " f.ls -q -o link.stl", dir_);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::is_symlink(dir_ / "link.stl"));
+  EXPECT_EQ(run_command(lsolid() + " check real.stl", dir_).exit_code, 0);
 }
 
 // A stem (colour 0) with a branch of colour 1 and one of colour 2.

@@ -8,9 +8,11 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
 
 #include "lsolid/errors.hpp"
 #include "support/mesh_checks.hpp"
+#include "support/test_dir.hpp"
 
 namespace lsolid {
 namespace {
@@ -20,12 +22,7 @@ using testing::box_mesh;
 
 class MeshIo : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("lsolid_io_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = testing::make_test_dir("lsolid_io_"); }
   void TearDown() override { fs::remove_all(dir_); }
   fs::path dir_;
 };
@@ -105,6 +102,82 @@ TEST_F(MeshIo, RejectsTruncatedAndForeignFiles) {
   { std::ofstream(dir_ / "x.stl") << "hello"; }
   EXPECT_THROW((void)read_mesh(dir_ / "x.stl"), IoError);
   EXPECT_THROW((void)read_mesh(dir_ / "absent.stl"), IoError);
+}
+
+// The message read_mesh refuses a file of this text with, or "no error".
+std::string read_error(const fs::path& path, const std::string& text) {
+  { std::ofstream(path, std::ios::binary) << text; }
+  try {
+    (void)read_mesh(path);
+  } catch (const IoError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST_F(MeshIo, ReadsAsciiStlByItsGrammarAndNamesTheLineOfAMistake) {
+  const fs::path stl = dir_ / "a.stl";
+  const std::string facet =
+      "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n"
+      "  vertex 0 1 0\n endloop\nendfacet\n";
+  // Nonsense after `solid` was read as a mesh of no triangles.
+  EXPECT_EQ(read_error(stl, "solid x\nnonsense here\n"),
+            stl.string() +
+                ": line 2: expected 'facet' or 'endsolid', not 'nonsense'");
+  EXPECT_EQ(read_error(stl, "solid x\n" + facet),
+            stl.string() +
+                ": the file ends where 'facet' or 'endsolid' should follow");
+  EXPECT_EQ(read_error(stl,
+                       "solid x\nfacet normal 0 0 1\nouter loop\nvertex "
+                       "0 nan 0\n"),
+            stl.string() + ": line 4: expected a finite number, not 'nan'");
+  EXPECT_EQ(read_error(stl,
+                       "solid x\nfacet normal 0 0 1\nouter loop\nvertex "
+                       "0 0 0\nvertex 1 0 0\nendloop\n"),
+            stl.string() + ": line 6: expected 'vertex', not 'endloop'");
+  // Several solids, and normals some exporters write as nan, are fine.
+  EXPECT_EQ(read_error(stl, "solid a\n" + facet + "endsolid a\nsolid b\n" +
+                                facet + "endsolid\n"),
+            "no error");
+  EXPECT_EQ(read_mesh(stl).triangles.size(), 2U);
+}
+
+TEST_F(MeshIo, RefusesOffCountsTheFileCannotHold) {
+  const fs::path off = dir_ / "x.off";
+  // These allocated 10^11 vertices (bad_alloc) or wrapped -1 to 2^64-1.
+  EXPECT_EQ(read_error(off, "OFF\n99999999999 1 0\n"),
+            off.string() +
+                ": bad OFF header: 99999999999 vertices and 1 faces do not fit "
+                "in a file of 20 bytes");
+  EXPECT_EQ(read_error(off, "OFF\n-1 1 0\n"),
+            off.string() +
+                ": bad OFF header: expected the counts of vertices, faces and "
+                "edges");
+  EXPECT_EQ(
+      read_error(off, "COFF\n3 1 0\n"),
+      off.string() + ": not an OFF file: it starts with 'COFF', not 'OFF'");
+  EXPECT_EQ(
+      read_error(off, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n99999999 0 1 2\n"),
+      off.string() + ": bad OFF face 0");
+}
+
+TEST_F(MeshIo, RefusesADamagedBinaryStlAndFilesThatAreNotRegular) {
+  const fs::path stl = dir_ / "b.stl";
+  std::string binary(84, '\0');
+  binary.replace(0, 5, "solid");  // as many exporters write the header
+  binary[80] = 2;
+  binary += std::string(50, '\0');
+  EXPECT_EQ(read_error(stl, binary),
+            stl.string() +
+                ": a damaged binary STL: its header counts 2 triangles (184 "
+                "bytes), the file has 134 bytes");
+  // A device would never end.
+  try {
+    (void)read_mesh("/dev/zero");
+    ADD_FAILURE() << "no error";
+  } catch (const IoError& e) {
+    EXPECT_STREQ(e.what(), "/dev/zero: cannot read: not a regular file");
+  }
 }
 
 std::string read_all(const fs::path& path) {

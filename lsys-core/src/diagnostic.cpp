@@ -3,6 +3,7 @@
 #include "lsys/diagnostic.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -65,6 +66,12 @@ std::optional<std::uint32_t> decode(std::string_view text, std::size_t length) {
     if ((b & 0xC0U) != 0x80U) return std::nullopt;
     c = (c << 6U) | (b & 0x3FU);
   }
+  // Overlong forms, surrogates and values past U+10FFFF are not UTF-8.
+  static constexpr std::array<std::uint32_t, 5> kLeast{0, 0, 0x80, 0x800,
+                                                       0x10000};
+  if (c < kLeast[length] || (c >= 0xD800U && c < 0xE000U) || c > 0x10FFFFU) {
+    return std::nullopt;
+  }
   return c;
 }
 
@@ -72,8 +79,13 @@ Shown shown(std::string_view text, std::size_t length) {
   const std::optional<std::uint32_t> c = decode(text, length);
   // (Appending piecewise avoids a GCC 12 -Wrestrict false alarm.)
   std::string escape(1, '<');
-  if (!c) {
-    escape.append(hex(static_cast<unsigned char>(text[0]), 2)).append(1, '>');
+  if (!c) {  // every byte of an ill-formed sequence
+    escape.clear();
+    for (std::size_t k = 0; k < length; ++k) {
+      escape.append(1, '<')
+          .append(hex(static_cast<unsigned char>(text[k]), 2))
+          .append(1, '>');
+    }
     return {escape};
   }
   if (*c == '\t') return {"\t", true};

@@ -1326,10 +1326,9 @@ class Parser {
 
   void read_axiom() {
     if (!axiom_) {
-      throw ParseError(Diagnostic{
-          .file = source_->name(),
-          .message = "no axiom: give one as 'axiom: F', 'ω: F' or a line of "
-                     "modules before the productions"});
+      fail(productions_.empty() ? 0 : trim(productions_.front().lhs).begin,
+           "no axiom: give one as 'axiom: F', '\u03C9: F' or a line of "
+           "modules before the productions");
     }
     const ExpressionScope scope{.constants = &grammar_.constants,
                                 .used_constants = &used_constants_};

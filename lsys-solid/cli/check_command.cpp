@@ -13,6 +13,7 @@
 #include "lsolid/errors.hpp"
 #include "lsolid/mesh_io.hpp"
 #include "lsolid/validate.hpp"
+#include "lsys/diagnostic.hpp"
 
 namespace lsolid::cli {
 namespace {
@@ -170,9 +171,8 @@ int run_check(const CheckCommand& command) {
   std::size_t triangles = 0;
   for (const ColoredMesh& v : volumes) triangles += v.mesh.triangles.size();
   if (triangles == 0) {
-    std::fprintf(stderr, "error: %s: the file holds no triangles\n",
-                 command.file.c_str());
-    return 2;
+    throw lsys::ParseError(lsys::Diagnostic{
+        .file = command.file, .message = "the file holds no triangles"});
   }
   if (volumes.size() > 1) return check_volumes(command, volumes);
   const ValidationReport report =

@@ -119,7 +119,8 @@ struct CheckCommand {
   std::string file;
   bool json = false;
 };
-/// Returns 0 when printable, 1 when not, 2 when unreadable.
+/// Returns 0 when printable, 1 when not, 2 when it cannot be read.
+/// @throws lsys::ParseError for a malformed file or one without triangles.
 int run_check(const CheckCommand& command);
 
 }  // namespace lsolid::cli

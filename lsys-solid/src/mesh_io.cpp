@@ -22,6 +22,8 @@
 
 #include "atomic_write.hpp"
 #include "lsolid/errors.hpp"
+#include "lsys/diagnostic.hpp"
+#include "lsys/source.hpp"
 #include "mesh_3mf.hpp"
 #include "vertex_key.hpp"
 
@@ -31,6 +33,25 @@ namespace {
 [[noreturn]] void fail(const std::filesystem::path& path,
                        const std::string& what) {
   throw IoError(path.string() + ": " + what);
+}
+
+// Malformed content is bad input (lsys::ParseError): in a text format at
+// its line and column, shown with the line and a caret; the text is copied
+// into a SourceFile only then.
+[[noreturn]] void malformed(const std::filesystem::path& path,
+                            const std::string& data, std::size_t offset,
+                            const std::string& message) {
+  const lsys::SourceFile source(path.string(), data);
+  // SourceFile drops a UTF-8 byte order mark.
+  const std::size_t removed = data.size() - source.text().size();
+  throw lsys::error_at(source, offset - std::min(offset, removed), message);
+}
+
+// Malformed content of a binary format, or of the file as a whole.
+[[noreturn]] void malformed(const std::filesystem::path& path,
+                            const std::string& message) {
+  throw lsys::ParseError(
+      lsys::Diagnostic{.file = path.string(), .message = message});
 }
 
 std::string lower_extension(const std::filesystem::path& path) {
@@ -64,7 +85,8 @@ TriangleMesh read_binary_stl(const std::string& data,
                              const std::filesystem::path& path) {
   std::uint32_t count = 0;
   std::memcpy(&count, data.data() + 80, 4);
-  if (data.size() != 84 + 50ULL * count) fail(path, "truncated binary STL");
+  if (data.size() != 84 + 50ULL * count)
+    malformed(path, "truncated binary STL");
   SoupBuilder soup;
   for (std::uint32_t i = 0; i < count; ++i) {
     const char* record = data.data() + 84 + 50ULL * i;
@@ -75,8 +97,8 @@ TriangleMesh read_binary_stl(const std::string& data,
       corners[k] = {xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]};
       if (!std::isfinite(corners[k].x) || !std::isfinite(corners[k].y) ||
           !std::isfinite(corners[k].z)) {
-        fail(path,
-             "triangle " + std::to_string(i) + " has a non-finite vertex");
+        malformed(path,
+                  "triangle " + std::to_string(i) + " has a non-finite vertex");
       }
     }
     soup.add(corners);
@@ -84,87 +106,41 @@ TriangleMesh read_binary_stl(const std::string& data,
   return soup.take();
 }
 
-// A word of a file as a message may quote it: at most 32 characters, and
-// bytes a terminal would act on (binary junk) as \xHH.
-std::string quote_word(std::string_view word) {
-  std::string out = "'";
-  for (std::size_t i = 0; i < word.size() && i < 32; ++i) {
-    const auto c = static_cast<unsigned char>(word[i]);
-    if (c < 0x20U || c >= 0x7FU) {
-      std::array<char, 8> hex{};
-      std::snprintf(hex.data(), hex.size(), "\\x%02X", c);
-      out += hex.data();
-    } else {
-      out += static_cast<char>(c);
-    }
-  }
-  return out + (word.size() > 32 ? "...'" : "'");
-}
-
-// ASCII STL word by word, as its grammar has it: `solid name`, then per
-// facet `facet normal nx ny nz`, `outer loop`, three `vertex x y z`,
-// `endloop`, `endfacet`, and `endsolid name` (several solids may follow
-// one another). Anything else is refused with its line, rather than
-// skipped: a file of nonsense after `solid` read as no triangles at all.
-class AsciiStlReader {
+// The words of a text format, separated by white space, with their places.
+class Words {
  public:
-  AsciiStlReader(std::string_view data, const std::filesystem::path& path)
+  Words(const std::string& data, const std::filesystem::path& path)
       : data_(data), path_(path) {}
 
-  TriangleMesh read() {
-    SoupBuilder soup;
-    bool has_solid = false;
-    for (std::string_view word = next(); !word.empty() || !has_solid;
-         word = next()) {
-      if (word != "solid") refuse("'solid'", word);
-      has_solid = true;
-      skip_line();  // the name
-      for (;;) {
-        word = next();
-        if (word == "endsolid") break;
-        if (word != "facet") refuse("'facet' or 'endsolid'", word);
-        expect("normal");
-        // Normals are recomputed; some exporters write nan there.
-        for (int k = 0; k < 3; ++k) (void)number(false);
-        expect("outer");
-        expect("loop");
-        std::array<glm::dvec3, 3> corners;
-        for (glm::dvec3& p : corners) {
-          expect("vertex");
-          p = {number(true), number(true), number(true)};
-        }
-        expect("endloop");
-        expect("endfacet");
-        soup.add(corners);
-      }
-      skip_line();
-    }
-    return soup.take();
-  }
-
- private:
   std::string_view next() {
     while (at_ < data_.size() &&
            std::isspace(static_cast<unsigned char>(data_[at_])) != 0) {
-      if (data_[at_++] == '\n') ++line_;
+      ++at_;
     }
-    const std::size_t begin = at_;
+    begin_ = at_;
     while (at_ < data_.size() &&
            std::isspace(static_cast<unsigned char>(data_[at_])) == 0) {
       ++at_;
     }
-    return data_.substr(begin, at_ - begin);
+    return std::string_view(data_).substr(begin_, at_ - begin_);
   }
   void skip_line() {
     while (at_ < data_.size() && data_[at_] != '\n') ++at_;
   }
+  // Refuses the word last read: `expected X, not 'word'`.
   [[noreturn]] void refuse(const std::string& expected,
                            std::string_view word) const {
     if (word.empty()) {
-      fail(path_, "the file ends where " + expected + " should follow");
+      malformed(path_, "the file ends where " + expected + " should follow");
     }
-    fail(path_, "line " + std::to_string(line_) + ": expected " + expected +
-                    ", not " + quote_word(word));
+    // A word is shown up to 32 characters (a binary file may have none).
+    std::string shown(word.substr(0, 32));
+    if (word.size() > 32) shown += "...";
+    malformed(path_, data_, begin_,
+              "expected " + expected + ", not '" + shown + "'");
+  }
+  [[noreturn]] void refuse_here(const std::string& message) const {
+    malformed(path_, data_, begin_, message);
   }
   void expect(std::string_view word) {
     const std::string_view got = next();
@@ -183,63 +159,105 @@ class AsciiStlReader {
     }
     return value;
   }
+  // A whole number from 0 to `most` of `things`, where a count is
+  // `expected`.
+  std::size_t count(const std::string& expected, const std::string& things,
+                    std::size_t most) {
+    const std::string_view word = next();
+    std::size_t value = 0;
+    const auto [end, error] =
+        std::from_chars(word.data(), word.data() + word.size(), value);
+    if (word.empty() || error != std::errc() ||
+        end != word.data() + word.size()) {
+      refuse(expected, word);
+    }
+    if (value > most) {
+      refuse_here(std::string(word) + " " + things +
+                  " do not fit in a file of " + std::to_string(data_.size()) +
+                  " bytes");
+    }
+    return value;
+  }
 
-  std::string_view data_;
+ private:
+  const std::string& data_;
   const std::filesystem::path& path_;
   std::size_t at_ = 0;
-  std::size_t line_ = 1;
+  std::size_t begin_ = 0;
 };
 
+// ASCII STL word by word, as its grammar has it: `solid name`, then per
+// facet `facet normal nx ny nz`, `outer loop`, three `vertex x y z`,
+// `endloop`, `endfacet`, and `endsolid name` (several solids may follow
+// one another). Anything else is refused at its place, rather than
+// skipped: a file of nonsense after `solid` read as no triangles at all.
 TriangleMesh read_ascii_stl(const std::string& data,
                             const std::filesystem::path& path) {
-  return AsciiStlReader(data, path).read();
+  Words words(data, path);
+  SoupBuilder soup;
+  bool has_solid = false;
+  for (std::string_view word = words.next(); !word.empty() || !has_solid;
+       word = words.next()) {
+    if (word != "solid") words.refuse("'solid'", word);
+    has_solid = true;
+    words.skip_line();  // the name
+    for (;;) {
+      word = words.next();
+      if (word == "endsolid") break;
+      if (word != "facet") words.refuse("'facet' or 'endsolid'", word);
+      words.expect("normal");
+      // Normals are recomputed; some exporters write nan there.
+      for (int k = 0; k < 3; ++k) (void)words.number(false);
+      words.expect("outer");
+      words.expect("loop");
+      std::array<glm::dvec3, 3> corners;
+      for (glm::dvec3& p : corners) {
+        words.expect("vertex");
+        p = {words.number(true), words.number(true), words.number(true)};
+      }
+      words.expect("endloop");
+      words.expect("endfacet");
+      soup.add(corners);
+    }
+    words.skip_line();
+  }
+  return soup.take();
 }
 
+// OFF: `OFF`, the counts of vertices, faces and edges, the vertices, and
+// each face as its corner count and corners (anything after them on its
+// line, a colour, is skipped). Counts beyond what the file can hold (a
+// vertex takes at least 6 bytes, a face 8) are refused before anything is
+// allocated for them.
 TriangleMesh read_off(const std::string& data,
                       const std::filesystem::path& path) {
-  std::istringstream in(data);
-  std::string header;
-  in >> header;
-  if (header != "OFF") {
-    fail(path,
-         "not an OFF file: it starts with " +
-             (header.empty() ? std::string("nothing") : quote_word(header)) +
-             ", not 'OFF'");
-  }
-  long long counts[3] = {0, 0, 0};
-  if (!(in >> counts[0] >> counts[1] >> counts[2]) || counts[0] < 0 ||
-      counts[1] < 0 || counts[2] < 0) {
-    fail(path,
-         "bad OFF header: expected the counts of vertices, faces and "
-         "edges");
-  }
-  // A vertex takes at least 6 bytes and a face 8: counts beyond what the
-  // file can hold are refused before anything is allocated for them.
-  const auto vertex_count = static_cast<std::size_t>(counts[0]);
-  const auto face_count = static_cast<std::size_t>(counts[1]);
-  if (vertex_count > data.size() / 6 || face_count > data.size() / 8) {
-    fail(path, "bad OFF header: " + std::to_string(vertex_count) +
-                   " vertices and " + std::to_string(face_count) +
-                   " faces do not fit in a file of " +
-                   std::to_string(data.size()) + " bytes");
-  }
+  Words words(data, path);
+  const std::string_view header = words.next();
+  if (header != "OFF") words.refuse("'OFF'", header);
+  const std::size_t vertex_count =
+      words.count("the number of vertices", "vertices", data.size() / 6);
+  const std::size_t face_count =
+      words.count("the number of faces", "faces", data.size() / 8);
+  (void)words.count("the number of edges", "edges", data.size());
   TriangleMesh mesh;
   mesh.vertices.resize(vertex_count);
   for (glm::dvec3& p : mesh.vertices) {
-    if (!(in >> p.x >> p.y >> p.z)) fail(path, "bad OFF vertex");
+    p = {words.number(true), words.number(true), words.number(true)};
   }
   for (std::size_t f = 0; f < face_count; ++f) {
-    long long n = 0;
-    if (!(in >> n) || n < 3 || static_cast<std::size_t>(n) > data.size()) {
-      fail(path, "bad OFF face " + std::to_string(f));
-    }
-    std::vector<std::uint32_t> polygon(static_cast<std::size_t>(n));
+    const std::size_t n =
+        words.count("the number of corners", "corners", data.size() / 2);
+    if (n < 3) words.refuse_here("a face needs at least 3 corners");
+    std::vector<std::uint32_t> polygon(n);
     for (std::uint32_t& v : polygon) {
-      if (!(in >> v) || v >= vertex_count) {
-        fail(path, "bad vertex index in OFF face " + std::to_string(f));
+      v = static_cast<std::uint32_t>(
+          words.count("a vertex index", "vertices", data.size()));
+      if (v >= vertex_count) {
+        words.refuse_here("no vertex " + std::to_string(v) + ": the file has " +
+                          std::to_string(vertex_count));
       }
     }
-    in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+    words.skip_line();
     for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {  // a convex fan
       mesh.triangles.push_back({polygon[0], polygon[k], polygon[k + 1]});
     }
@@ -397,18 +415,21 @@ std::vector<ColoredMesh> read_obj(const std::string& data,
   std::vector<ColoredMesh> volumes(1);
   std::unordered_map<std::uint32_t, std::uint32_t> local;
   int color = 0;
-  std::size_t number = 0;
+  std::size_t next_line = 0;
   while (std::getline(in, line)) {
-    ++number;
+    const std::size_t start = next_line;
+    next_line += line.size() + 1;
     std::istringstream words(line);
     std::string tag;
     words >> tag;
     const auto bad = [&](const std::string& what) {
-      fail(path, "line " + std::to_string(number) + ": " + what);
+      const std::size_t tag_at = line.find_first_not_of(" \t");
+      malformed(path, data, start + (tag_at == std::string::npos ? 0 : tag_at),
+                what);
     };
     if (tag == "v") {
       glm::dvec3 p;
-      if (!(words >> p.x >> p.y >> p.z)) bad("bad vertex");
+      if (!(words >> p.x >> p.y >> p.z)) bad("a vertex is 'v' and 3 numbers");
       points.push_back(p);
     } else if (tag == "o" || tag == "g") {
       if (!volumes.back().mesh.triangles.empty()) {
@@ -574,12 +595,13 @@ TriangleMesh read_mesh(const std::filesystem::path& path) {
       std::string::npos;
   if (data.starts_with("solid") && is_text) return read_ascii_stl(data, path);
   if (data.size() >= 84 && !is_text) {
-    fail(path,
-         "a damaged binary STL: its header counts " + std::to_string(count) +
-             " triangles (" + std::to_string(84 + 50ULL * count) +
-             " bytes), the file has " + std::to_string(data.size()) + " bytes");
+    malformed(path, "a damaged binary STL: its header counts " +
+                        std::to_string(count) + " triangles (" +
+                        std::to_string(84 + 50ULL * count) +
+                        " bytes), the file has " + std::to_string(data.size()) +
+                        " bytes");
   }
-  fail(path, "not an STL or OFF file");
+  malformed(path, "not an STL or OFF file");
 }
 
 std::vector<ColoredMesh> read_colored(const std::filesystem::path& path) {

@@ -63,7 +63,10 @@ glm::dvec3 parse_bed_mm(std::string_view text, const std::string& what) {
   if (sides.size() != 3) {
     throw lsys::ParseError(lsys::Diagnostic{
         .file = what,
-        .message = "a bed is WIDTHxDEPTHxHEIGHT, such as 220x220x250mm"});
+        .line = 1,
+        .column = 1,
+        .message = "a bed is WIDTHxDEPTHxHEIGHT, such as 220x220x250mm",
+        .source_line = std::string(text)});
   }
   std::size_t unit_at = sides[2].size();
   while (unit_at > 0 &&

@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <set>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -289,7 +291,8 @@ TEST_F(Build, RefusesAnUnknownBase) {
   const auto r = run_command(lsolid() + " b.ls --base wobbly", dir_);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err,
-            "--base: error: base must be auto, disc or none, not 'wobbly'\n");
+            "--base:1:1: error: base must be auto, disc or none, not "
+            "'wobbly'\nwobbly\n^\n");
   { std::ofstream(dir_ / "c.ls") << "base: tripod\n\u03C9: F\n"; }
   const auto file = run_command(lsolid() + " c.ls", dir_);
   EXPECT_EQ(file.exit_code, 2);
@@ -711,39 +714,88 @@ TEST(Check, ExitsOneForAnUnprintableMeshAndTwoForAnUnreadableOne) {
   EXPECT_NE(missing.err.find("cannot read"), std::string::npos);
 }
 
-// Every file in tests/data/diagnostics has the exact stderr beside it.
-class Diagnostics : public ::testing::TestWithParam<std::string> {};
+// The catalogue of bad inputs, tests/data/diagnostics/cases.txt: a file, the
+// exit code lsolid gives it, and the options after it.
+struct BadInput {
+  std::string file;
+  int exit_code = 0;
+  std::string options;
+};
 
-TEST_P(Diagnostics, PrintsFileLineColumnMessageAndCaret) {
-  const std::string name = GetParam();
-  const auto r =
-      run_command(lsolid() + " skeleton " + name + ".ls", kDiagnostics);
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.out, "");
-  EXPECT_EQ(r.err, read_text(kDiagnostics / (name + ".stderr")));
+std::vector<BadInput> bad_inputs() {
+  std::vector<BadInput> out;
+  std::ifstream in(kDiagnostics / "cases.txt");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line.front() == '#') continue;
+    std::istringstream words(line);
+    BadInput c;
+    words >> c.file >> c.exit_code;
+    std::getline(words >> std::ws, c.options);
+    out.push_back(c);
+  }
+  return out;
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Golden, Diagnostics,
-    ::testing::Values("bad-number", "division-by-zero", "duplicate-definition",
-                      "missing-arrow", "too-many-segments",
-                      "unbalanced-bracket", "undefined-name", "unknown-setting",
-                      "unterminated-comment", "wrong-parameter-count",
-                      "wrong-turtle-parameters"),
-    [](const auto& test) {
-      std::string name = test.param;
-      for (char& c : name) {
-        if (c == '-') c = '_';
-      }
-      return name;
-    });
+class Catalogue : public ::testing::TestWithParam<BadInput> {};
 
-TEST(Diagnostics, EveryGoldenFileIsTested) {
-  std::size_t count = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(kDiagnostics)) {
-    if (entry.path().extension() == ".ls") ++count;
+// Each bad input gives exactly its golden standard error and exit code,
+// prints nothing on standard output, and leaves an existing output file
+// as it was, with nothing else beside it.
+TEST_P(Catalogue, GivesItsGoldenErrorAndLeavesTheOutputUntouched) {
+  const BadInput& c = GetParam();
+  const std::filesystem::path stem = std::filesystem::path(c.file).stem();
+  const auto dir =
+      std::filesystem::temp_directory_path() /
+      ("lsolid_catalogue_" + std::to_string(::getpid()) + "_" + stem.string());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::filesystem::copy_file(kDiagnostics / c.file, dir / c.file);
+  const std::string kept = "keep me: " + stem.string() + "\n";
+  { std::ofstream(dir / "out.stl", std::ios::binary) << kept; }
+  const bool is_ls = std::filesystem::path(c.file).extension() == ".ls";
+  const std::string command =
+      is_ls ? lsolid() + " " + c.file + " " + c.options + " -o out.stl"
+            : lsolid() + " check " + c.file + " " + c.options;
+  const auto r = run_command(command, dir);
+  EXPECT_EQ(r.exit_code, c.exit_code) << command;
+  EXPECT_EQ(r.err, read_text(kDiagnostics / (stem.string() + ".stderr")))
+      << command;
+  EXPECT_EQ(r.out, "") << command;
+  EXPECT_EQ(read_text(dir / "out.stl"), kept) << command;
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& e :
+       std::filesystem::directory_iterator(dir)) {
+    ++entries;
   }
-  EXPECT_EQ(count, 11U);
+  EXPECT_EQ(entries, 2U) << command;  // the input and out.stl, no temporary
+  std::filesystem::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(Golden, Catalogue, ::testing::ValuesIn(bad_inputs()),
+                         [](const auto& test) {
+                           std::string name = test.param.file;
+                           for (char& c : name) {
+                             if (c == '-' || c == '.') c = '_';
+                           }
+                           return name;
+                         });
+
+TEST(CatalogueFolder, ListsEveryInputOnceWithItsGoldenError) {
+  std::set<std::string> listed;
+  for (const BadInput& c : bad_inputs()) {
+    EXPECT_TRUE(listed.insert(c.file).second) << c.file << " twice";
+    EXPECT_TRUE(std::filesystem::exists(
+        kDiagnostics /
+        (std::filesystem::path(c.file).stem().string() + ".stderr")))
+        << c.file;
+  }
+  EXPECT_GE(listed.size(), 60U);
+  for (const auto& entry : std::filesystem::directory_iterator(kDiagnostics)) {
+    const std::string name = entry.path().filename().string();
+    if (name == "cases.txt" || entry.path().extension() == ".stderr") continue;
+    EXPECT_EQ(listed.count(name), 1U) << name << " is not in cases.txt";
+  }
 }
 
 }  // namespace

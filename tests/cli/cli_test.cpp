@@ -655,6 +655,12 @@ TEST_F(Build, RefusesUnknownFormatsAndEmptyModels) {
             "segment and no polygon; modules without a turtle meaning draw "
             "nothing (map them with an alias block, e.g. 'aliases: Fl=F "
             "Fr=F')\n\u03C9: A+B\n   ^\n");
+  // A skeleton in millimetres cannot be scaled either; in model units it
+  // is shown empty, with a warning.
+  const auto mm = run_command(lsolid() + " skeleton empty.ls --wall 1mm", dir_);
+  EXPECT_EQ(mm.exit_code, 2);
+  EXPECT_EQ(mm.err, empty.err);
+  EXPECT_EQ(run_command(lsolid() + " skeleton empty.ls", dir_).exit_code, 0);
 }
 
 TEST_F(Build, ReadsPrintSettingsFromTheFile) {

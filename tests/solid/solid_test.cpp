@@ -253,8 +253,18 @@ TEST(Solid, ReadsPrintSettingsFromTheFileUnlessTheCommandLineGivesThem) {
   }
 }
 
-TEST(Solid, RefusesAModelThatDrawsNothing) {
-  EXPECT_THROW((void)build_solid(parse("\u03C9: A+B")), GeometryError);
+TEST(Solid, RefusesAModelThatDrawsNothingAsBadInputAtItsPlace) {
+  // It was a GeometryError (exit 3); F(0) draws nothing either.
+  try {
+    (void)build_solid(parse("n=1\n\u03C9: A\nA \u2192 F(0)+F(0)\n"));
+    FAIL() << "no error";
+  } catch (const lsys::ParseError& e) {
+    EXPECT_EQ(e.diagnostic().line, 3);
+    EXPECT_EQ(e.diagnostic().column, 5);
+    EXPECT_EQ(e.diagnostic().message,
+              "nothing to build: every segment has length 0");
+  }
+  EXPECT_THROW((void)build_solid(parse("\u03C9: A+B")), lsys::ParseError);
 }
 
 TEST(Solid, WritesOverlappingPartsWhenAskedNotToUnite) {

@@ -163,7 +163,9 @@ TEST_F(MeshIo, RefusesOffCountsTheFileCannotHold) {
                 ":2:1: error: 99999999999 vertices do not fit in a file of "
                 "20 bytes\n99999999999 1 0\n^\n");
   EXPECT_EQ(read_error(off, "OFF\n-1 1 0\n"),
-            name + ":2:1: error: expected the number of vertices, not '-1'\n-1 1 0\n^\n");
+            name +
+                ":2:1: error: expected the number of vertices, not '-1'\n-1 1 "
+                "0\n^\n");
   EXPECT_EQ(read_error(off, "COFF\n3 1 0\n"),
             name + ":1:1: error: expected 'OFF', not 'COFF'\nCOFF\n^\n");
   EXPECT_EQ(read_error(off, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"),

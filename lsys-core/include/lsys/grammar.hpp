@@ -39,7 +39,7 @@ struct PatternModule {
 
 /// The right-hand side of a production (or the axiom), kept flat: a name,
 /// a source place and a range of parameter expressions per module, and,
-/// when no expression depends on a parameter, their values. About 16 bytes
+/// when no expression depends on a parameter, their values. About 12 bytes
 /// a module besides the expressions, so that a long axiom stays small.
 class Successor {
  public:

@@ -47,7 +47,7 @@ class SourceFile {
   std::vector<std::size_t> line_starts_;
 };
 
-/// The largest `.ls` file lsolid reads, 16 MiB: hundreds of times the
+/// The largest `.ls` file lsolid reads, 16 MiB: thousands of times the
 /// largest L-system of the source documents, and small enough that reading
 /// it takes a fraction of a second and well under a gigabyte.
 inline constexpr std::size_t kMaxSourceBytes = std::size_t{16} << 20U;

@@ -267,6 +267,23 @@ TEST(Solid, RefusesAModelThatDrawsNothingAsBadInputAtItsPlace) {
   EXPECT_THROW((void)build_solid(parse("\u03C9: A+B")), lsys::ParseError);
 }
 
+TEST(Solid, RefusesAModelReachingBeyondAKilometre) {
+  // F(1e300) at 1 mm a unit failed as geometry (exit 3), through integer
+  // grid keys that could not hold its coordinates.
+  SolidOptions options;
+  options.print.scale_mm_per_unit = 1.0;
+  options.print.size_mm.reset();
+  try {
+    (void)build_solid(parse("\u03C9: F(1e300)\n"), options);
+    FAIL() << "no error";
+  } catch (const lsys::ParseError& e) {
+    EXPECT_EQ(e.diagnostic().column, 4);
+    EXPECT_EQ(e.diagnostic().message,
+              "at 1 mm per unit the model reaches 1e+300 mm from its origin, "
+              "more than the 1 km (1000000 mm) lsolid builds");
+  }
+}
+
 TEST(Solid, WritesOverlappingPartsWhenAskedNotToUnite) {
   const Solid s =
       build_solid(parse("\u03C9: F[+F]F\n\u03B4=45"), {.unite = false});

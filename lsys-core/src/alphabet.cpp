@@ -9,6 +9,9 @@ namespace lsys {
 std::size_t code_point_length(std::string_view text) noexcept {
   const auto lead = static_cast<unsigned char>(text.front());
   std::size_t length = 1;
+  if (lead >= 0xF8U || (lead >= 0x80U && lead < 0xC0U)) {
+    return 1;
+  }
   if (lead >= 0xF0U) {
     length = 4;
   } else if (lead >= 0xE0U) {
@@ -16,7 +19,13 @@ std::size_t code_point_length(std::string_view text) noexcept {
   } else if (lead >= 0xC0U) {
     length = 2;
   }
-  return std::min(length, text.size());
+  // A lead byte without its continuation bytes is one invalid byte, so
+  // that it cannot swallow the characters after it.
+  if (length > text.size()) return 1;
+  for (std::size_t k = 1; k < length; ++k) {
+    if ((static_cast<unsigned char>(text[k]) & 0xC0U) != 0x80U) return 1;
+  }
+  return length;
 }
 
 SymbolId Alphabet::intern(std::string_view name) {
@@ -27,11 +36,15 @@ SymbolId Alphabet::intern(std::string_view name) {
   multi_.push_back(multi);
   ids_.emplace(std::string(name), id);
   if (multi) {
-    long_names_.emplace_back(name);
-    std::stable_sort(long_names_.begin(), long_names_.end(),
-                     [](const std::string& a, const std::string& b) {
-                       return a.size() > b.size();
-                     });
+    std::uint32_t node = 0;
+    for (const char byte : name) {
+      const auto [it, inserted] = edges_.try_emplace(
+          std::uint64_t{node} * 256U + static_cast<unsigned char>(byte),
+          static_cast<std::uint32_t>(ends_name_.size()));
+      if (inserted) ends_name_.push_back(false);
+      node = it->second;
+    }
+    ends_name_[node] = true;
   }
   return id;
 }
@@ -42,18 +55,36 @@ std::optional<SymbolId> Alphabet::find(std::string_view name) const {
   return it->second;
 }
 
+std::optional<std::uint32_t> Alphabet::child(std::uint32_t node,
+                                             char byte) const {
+  ++bytes_examined_;
+  const auto it = edges_.find(std::uint64_t{node} * 256U +
+                              static_cast<unsigned char>(byte));
+  if (it == edges_.end()) return std::nullopt;
+  return it->second;
+}
+
 bool Alphabet::extends_to_longer_name(std::string_view text) const {
-  for (const std::string& name : long_names_) {
-    if (name.starts_with(text)) return true;
+  // Every node of the trie lies on the path of some name.
+  std::uint32_t node = 0;
+  for (const char byte : text) {
+    const auto next = child(node, byte);
+    if (!next) return false;
+    node = *next;
   }
-  return false;
+  return node != 0;
 }
 
 std::size_t Alphabet::match_length(std::string_view text) const {
-  for (const std::string& name : long_names_) {
-    if (text.starts_with(name)) return name.size();
+  std::size_t longest = 0;
+  std::uint32_t node = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto next = child(node, text[i]);
+    if (!next) break;
+    node = *next;
+    if (ends_name_[node]) longest = i + 1;
   }
-  return code_point_length(text);
+  return longest > 0 ? longest : code_point_length(text);
 }
 
 }  // namespace lsys

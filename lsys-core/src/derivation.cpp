@@ -86,6 +86,37 @@ class Derivation::Impl {
     throw limit_error(grammar_, options_, n_, what);
   }
 
+  static constexpr const char* kWhole =
+      "with contexts or cuts, the whole string is rewritten each step";
+
+  std::string memory_text() const {
+    return std::to_string(options_.max_memory_bytes >> 20U) + " MiB";
+  }
+
+  // Refuses before `out` grows past the memory limit with one more module
+  // of `parameters` values, counting the other string and bracket matching.
+  void check_room(const ModuleString& out, std::size_t parameters) {
+    std::size_t held =
+        out.memory_bytes_after_push(parameters) +
+        (match_.capacity() + open_.capacity()) * sizeof(std::size_t);
+    if (&out != &string_) held += string_.memory_bytes();
+    // A module string indexes its values with 32 bits.
+    constexpr std::size_t kMostValues = 0xFFFFFFFFU;
+    if (held > options_.max_memory_bytes ||
+        out.parameter_count() + parameters > kMostValues) {
+      refuse_memory(step_, out.size());
+    }
+  }
+
+  [[noreturn]] void refuse_memory(int step, std::size_t modules) {
+    string_ = ModuleString();
+    match_ = {};
+    refuse("needs more than the limit of " + memory_text() +
+           " (--max-memory) in step " + std::to_string(step + 1) +
+           (modules > 0 ? ", at " + std::to_string(modules) + " modules" : "") +
+           "; " + kWhole);
+  }
+
   // Refuses at once when the exact size, or a lower bound of it, is above a
   // limit; where the size is exact and within the limits, nothing needs
   // counting while deriving.
@@ -106,6 +137,14 @@ class Derivation::Impl {
       refuse("would derive a string of " + at_least +
              count_text(bound->modules) + " modules, more than the limit of " +
              count_text(max_modules) + " (--max-modules)");
+    }
+    // A string held whole takes at least 16 bytes a module.
+    constexpr double kLeastBytesPerModule = 16.0;
+    if (!is_streaming_ && bound->modules * kLeastBytesPerModule >
+                              static_cast<double>(options_.max_memory_bytes)) {
+      refuse("would hold a string of " + at_least + count_text(bound->modules) +
+             " modules, more than the limit of " + memory_text() +
+             " (--max-memory); " + kWhole);
     }
     if (prediction_) is_counting_ = false;
   }
@@ -385,6 +424,7 @@ class Derivation::Impl {
         return;
       }
     }
+    check_room(out, params.size());
     out.push_back(symbol, params, step);
   }
 
@@ -401,10 +441,11 @@ class Derivation::Impl {
     }
   }
 
-  // ABOP p. 73: `%` removes itself and the rest of its branch.
+  // ABOP p. 73: `%` removes itself and the rest of its branch. In place,
+  // so that cutting needs no second copy of the string.
   static void cut(ModuleString& s) {
     if (!s.contains(kCut)) return;
-    ModuleString kept;
+    std::vector<bool> keep(s.size(), true);
     bool cutting = false;
     int depth = 0;
     for (std::size_t i = 0; i < s.size(); ++i) {
@@ -413,27 +454,46 @@ class Derivation::Impl {
         if (sym == kCut) {
           cutting = true;
           depth = 0;
-          continue;
+          keep[i] = false;
         }
-        kept.push_back(s, i);
         continue;
       }
       if (sym == kBranchOpen) ++depth;
       if (sym == kBranchClose && depth-- == 0) {
         cutting = false;
-        kept.push_back(s, i);
+        continue;
       }
+      keep[i] = false;
     }
-    s = std::move(kept);
+    s.retain(keep);
   }
 
   void materialise() {
     materialised_ = true;
+    // Memory is checked as the strings grow; running out anyway (a smaller
+    // machine than the limit assumes) is reported as the same limit.
+    ModuleString next;
+    try {
+      materialise_steps(next);
+    } catch (const std::bad_alloc&) {
+      next = ModuleString();
+      refuse_memory(step_, 0);
+    }
+  }
+
+  void materialise_steps(ModuleString& next) {
     append_successor(string_, grammar_.axiom, {}, 0);
     cut(string_);
-    ModuleString next;
-    for (int step = 0; step < n_; ++step) {
-      if (is_context_sensitive_) compute_matches(string_);
+    for (step_ = 0; step_ < n_; ++step_) {
+      const int step = step_;
+      if (is_context_sensitive_) {
+        if (string_.memory_bytes() + next.memory_bytes() +
+                string_.size() * sizeof(std::size_t) >
+            options_.max_memory_bytes) {
+          refuse_memory(step, string_.size());
+        }
+        compute_matches(string_);
+      }
       next.clear();
       const auto k = static_cast<std::uint32_t>(step);
       for (std::size_t i = 0; i < string_.size(); ++i) {
@@ -453,6 +513,7 @@ class Derivation::Impl {
         if (rule != nullptr) {
           append_successor(next, rule->successor, slots_, k + 1);
         } else {
+          check_room(next, string_.parameters(i).size());
           next.push_back(string_, i);
         }
         if (next.size() > options_.max_modules) {
@@ -489,6 +550,7 @@ class Derivation::Impl {
   std::vector<std::uint64_t> emitted_;
 
   bool materialised_ = false;
+  int step_ = 0;  // of the whole-string derivation, for messages
   ModuleString string_;
   std::size_t served_ = 0;
   std::vector<std::size_t> match_;

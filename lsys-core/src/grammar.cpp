@@ -4,23 +4,35 @@
 
 namespace lsys {
 
-Successor::Successor(std::vector<ModuleTemplate> modules)
-    : modules_(std::move(modules)) {
-  symbols_.reserve(modules_.size());
-  for (const ModuleTemplate& m : modules_) {
-    symbols_.push_back(m.symbol);
-    for (const Expression& e : m.parameters) {
-      expressions_.push_back(e);
-      is_constant_ = is_constant_ && e.is_constant();
-    }
-    begins_.push_back(static_cast<std::uint32_t>(expressions_.size()));
-  }
-  if (is_constant_) {
-    constant_values_.reserve(expressions_.size());
-    for (const Expression& e : expressions_) {
+void Successor::push_back(SymbolId symbol, std::vector<Expression> parameters,
+                          std::size_t offset) {
+  symbols_.push_back(symbol);
+  offsets_.push_back(static_cast<std::uint32_t>(offset));
+  for (Expression& e : parameters) {
+    if (is_constant_ && e.is_constant()) {
       constant_values_.push_back(e.constant_value());
+    } else if (is_constant_) {
+      is_constant_ = false;
+      constant_values_.clear();
+      constant_values_.shrink_to_fit();
     }
+    expressions_.push_back(std::move(e));
   }
+  begins_.push_back(static_cast<std::uint32_t>(expressions_.size()));
+}
+
+void Successor::reserve(std::size_t modules) {
+  symbols_.reserve(modules);
+  offsets_.reserve(modules);
+  begins_.reserve(modules + 1);
+}
+
+void Successor::shrink_to_fit() {
+  symbols_.shrink_to_fit();
+  offsets_.shrink_to_fit();
+  begins_.shrink_to_fit();
+  expressions_.shrink_to_fit();
+  constant_values_.shrink_to_fit();
 }
 
 void Successor::instantiate(std::span<const double> slots,

@@ -7,16 +7,80 @@
 #include "lsys/interpretation.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <glm/geometric.hpp>
+#include <initializer_list>
 #include <limits>
+#include <optional>
+#include <string>
 
+#include "lsys/diagnostic.hpp"
+#include "lsys/module_string.hpp"
 #include "lsys/turtle.hpp"
 #include "rule_index.hpp"
 #include "size_model.hpp"
 
 namespace lsys {
 namespace {
+
+bool is_one_of(TurtleCommand command,
+               std::initializer_list<TurtleCommand> commands) {
+  return std::find(commands.begin(), commands.end(), command) != commands.end();
+}
+
+// The place of the first module, of the axiom and then of every successor
+// in file order, of one of `commands` whose parameters `matches` accepts.
+std::optional<std::size_t> find_module(
+    const Grammar& g, std::initializer_list<TurtleCommand> commands,
+    const std::function<bool(std::span<const Expression>)>& matches) {
+  std::vector<const Successor*> successors{&g.axiom};
+  for (const auto* rules :
+       {&g.productions, &g.decompositions, &g.homomorphisms}) {
+    for (const Production& p : *rules) successors.push_back(&p.successor);
+  }
+  for (const Successor* successor : successors) {
+    for (std::size_t i = 0; i < successor->size(); ++i) {
+      if (is_one_of(g.commands[successor->symbols()[i]], commands) &&
+          matches(successor->parameters(i))) {
+        return successor->offset(i);
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+// Where a bad turtle value most likely comes from, as a module string keeps
+// no source places: the first module of `commands` whose first parameter
+// is a constant that `is_bad` rejects, else the first whose parameter is
+// computed, else `fallback`.
+std::size_t place_of(const Grammar& g,
+                     std::initializer_list<TurtleCommand> commands,
+                     const std::function<bool(double)>& is_bad,
+                     std::size_t fallback) {
+  const auto constant =
+      find_module(g, commands, [&](std::span<const Expression> parameters) {
+        return !parameters.empty() && parameters[0].is_constant() &&
+               is_bad(parameters[0].constant_value());
+      });
+  if (constant) return *constant;
+  return find_module(g, commands,
+                     [](std::span<const Expression> parameters) {
+                       return !parameters.empty() &&
+                              !parameters[0].is_constant();
+                     })
+      .value_or(fallback);
+}
+
+std::string number_text(double value) {
+  std::string out;
+  append_number(out, value);
+  return out;
+}
+
+bool is_color_index(double c) {
+  return c >= 0.0 && c < static_cast<double>(kMaxColorIndex) + 1.0;
+}
 
 struct TurtleState {
   Turtle turtle;
@@ -185,12 +249,11 @@ class Interpreter {
         }
         return;
       case TurtleCommand::ColorNext:
-        state_.color =
-            params.empty() ? state_.color + 1 : static_cast<int>(params[0]);
+        state_.color = params.empty() ? next_color() : color_index(params[0]);
         return;
       case TurtleCommand::ColorPrevious:
         state_.color = params.empty() ? std::max(0, state_.color - 1)
-                                      : static_cast<int>(params[0]);
+                                      : color_index(params[0]);
         return;
       case TurtleCommand::SetTropism:
         state_.tropism = glm::dvec3(params[0], params[1], params[2]);
@@ -199,6 +262,62 @@ class Interpreter {
         state_.elasticity = params[0];
         return;
     }
+  }
+
+  // A colour index from a parameter: truncated, and refused outside 0 to
+  // kMaxColorIndex before any conversion to int (1e300 or 2^31 would not
+  // fit one).
+  int color_index(double c) const {
+    if (!is_color_index(c)) {
+      throw error_at(
+          *grammar_.source,
+          place_of(
+              grammar_,
+              {TurtleCommand::ColorNext, TurtleCommand::ColorPrevious},
+              [](double v) { return !is_color_index(v); },
+              grammar_.axiom_offset),
+          "colour index " + number_text(c) + " is out of range 0 to " +
+              std::to_string(kMaxColorIndex));
+    }
+    return static_cast<int>(c);
+  }
+
+  int next_color() const {
+    if (state_.color < kMaxColorIndex) return state_.color + 1;
+    throw error_at(*grammar_.source,
+                   find_module(grammar_, {TurtleCommand::ColorNext},
+                               [](std::span<const Expression> parameters) {
+                                 return parameters.empty();
+                               })
+                       .value_or(grammar_.axiom_offset),
+                   "colour index " + std::to_string(kMaxColorIndex + 1) +
+                       " is out of range 0 to " +
+                       std::to_string(kMaxColorIndex));
+  }
+
+  // Lengths and widths are finite, but their sums need not be: refuse a
+  // turtle that has left the doubles rather than draw NaN.
+  void check_finite() const {
+    const glm::dvec3& p = state_.turtle.position();
+    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) &&
+        std::isfinite(state_.width)) {
+      return;
+    }
+    const bool is_width = !std::isfinite(state_.width);
+    throw error_at(
+        *grammar_.source,
+        place_of(
+            grammar_,
+            is_width
+                ? std::initializer_list<TurtleCommand>{TurtleCommand::Width}
+                : std::initializer_list<
+                      TurtleCommand>{TurtleCommand::Draw, TurtleCommand::Move,
+                                     TurtleCommand::DrawNoVertex,
+                                     TurtleCommand::MoveNoVertex},
+            [](double v) { return std::fabs(v) > 1e100; },
+            grammar_.axiom_offset),
+        std::string("the turtle's ") + (is_width ? "width" : "position") +
+            " overflows: it is no longer a finite number");
   }
 
   void draw(std::span<const double> params, std::uint32_t generation) {
@@ -210,6 +329,8 @@ class Interpreter {
     if (params.size() > 1) {
       state_.width = std::max(0.0, params[1] * settings_.width_scale);
     }
+    check_finite();
+    if (length == 0.0) ++skeleton_.zero_length_segments;
     if (length != 0.0) {
       skeleton_.segments.push_back(
           Segment{p0, turtle.position(), start,
@@ -224,6 +345,7 @@ class Interpreter {
   }
 
   void add_vertex() {
+    check_finite();
     if (polygons_.empty()) return;
     auto& points = polygons_.back().points;
     const glm::dvec3& p = state_.turtle.position();
@@ -301,6 +423,42 @@ Skeleton interpret(const Grammar& grammar, const DerivationOptions& derivation,
   ModuleString chunk;
   while (d.next(chunk)) interpreter.run(chunk);
   return interpreter.finish();
+}
+
+ParseError nothing_drawn_error(const Grammar& grammar,
+                               const Skeleton& skeleton) {
+  const SourceFile& source = *grammar.source;
+  const std::size_t axiom = grammar.axiom_offset;
+  const std::string nothing = "nothing to build: ";
+  if (skeleton.zero_length_segments > 0) {
+    if (grammar.settings.step == 0.0 && grammar.settings.step_offset) {
+      return error_at(source, *grammar.settings.step_offset,
+                      nothing +
+                          "the step is 0, so F without a length draws "
+                          "a segment of length 0");
+    }
+    return error_at(
+        source,
+        place_of(
+            grammar, {TurtleCommand::Draw, TurtleCommand::DrawNoVertex},
+            [](double v) { return v == 0.0; }, axiom),
+        nothing + "every segment has length 0");
+  }
+  if (skeleton.degenerate_polygons > 0 || skeleton.unclosed_polygons > 0) {
+    return error_at(
+        source,
+        find_module(grammar, {TurtleCommand::PolygonBegin},
+                    [](std::span<const Expression>) { return true; })
+            .value_or(axiom),
+        nothing + (skeleton.degenerate_polygons > 0
+                       ? "every polygon has fewer than 3 distinct points"
+                       : "no polygon is closed with '}'"));
+  }
+  return error_at(source, axiom,
+                  nothing +
+                      "the L-system draws no segment and no polygon; modules "
+                      "without a turtle meaning draw nothing (map them with "
+                      "an alias block, e.g. 'aliases: Fl=F Fr=F')");
 }
 
 Skeleton interpret_string(const Grammar& grammar, const ModuleString& modules,

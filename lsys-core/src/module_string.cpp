@@ -2,10 +2,28 @@
 // SPDX-License-Identifier: MIT
 #include "lsys/module_string.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 
 namespace lsys {
+
+void ModuleString::retain(const std::vector<bool>& keep) {
+  std::size_t kept = 0;
+  std::size_t values = 0;
+  for (std::size_t i = 0; i < entries_.size(); ++i) {
+    if (!keep[i]) continue;
+    Entry e = entries_[i];
+    // Kept values only move toward the front, so copying forward is safe.
+    std::copy_n(params_.begin() + e.first_parameter, e.parameter_count,
+                params_.begin() + static_cast<std::ptrdiff_t>(values));
+    e.first_parameter = static_cast<std::uint32_t>(values);
+    values += e.parameter_count;
+    entries_[kept++] = e;
+  }
+  entries_.resize(kept);
+  params_.resize(values);
+}
 
 void append_number(std::string& out, double value) {
   if (value == 0.0) value = 0.0;  // print -0 as 0

@@ -190,13 +190,14 @@ class Parser {
     for (const char* name : {"@v", "@Tp", "@Ts"})
       grammar_.alphabet.intern(name);
     sort_lines();
+    evaluate_defines();  // labels are told from conditions over constants
     declare_names();
-    evaluate_defines();
     read_aliases();
     read_module_declarations();
     read_settings();
     read_axiom();
     for (const ProductionText& p : productions_) read_production(p);
+    reject_letter_settings_of_modules();
     build_commands();
     for (const std::string& name : given_defines_) {
       if (used_constants_.count(name) == 0 && !file_defines_.count(name)) {
@@ -215,11 +216,24 @@ class Parser {
 
   // --- Pass 1: lines ------------------------------------------------------
 
-  // Replaces `/* ... */` by blanks, keeping line breaks and byte offsets.
+  // Replaces comments by blanks, keeping line breaks and byte offsets:
+  // `/* ... */` anywhere, and from a `#` that stands alone as a word (a
+  // blank or the line's start before it, a blank or the line's end after
+  // it) to the end of the line (`axiom: F   # three`), as L-Py and shells
+  // write them. A `#` that touches a module is cpfg's widen (`F#F`,
+  // `#(2)`), and one followed by a letter starts a directive.
   std::string blank_comments(const std::string& text) const {
     std::string out = text;
-    for (std::size_t i = 0; i + 1 < out.size(); ++i) {
-      if (out[i] != '/' || out[i + 1] != '*') continue;
+    const auto is_space = [](char c) {
+      return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+    };
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      if (out[i] == '#' && (i == 0 || is_space(out[i - 1])) &&
+          (i + 1 == out.size() || is_space(out[i + 1]))) {
+        for (; i < out.size() && out[i] != '\n'; ++i) out[i] = ' ';
+        continue;
+      }
+      if (out[i] != '/' || i + 1 == out.size() || out[i + 1] != '*') continue;
       const std::size_t close = out.find("*/", i + 2);
       if (close == std::string::npos) fail(i, "unterminated comment '/*'");
       for (std::size_t j = i; j < close + 2; ++j) {
@@ -238,6 +252,13 @@ class Parser {
 
   std::string_view view(Range r) const {
     return text_.substr(r.begin, r.end - r.begin);
+  }
+
+  // Finds `what` in r (and nowhere after it: a search to the end of the
+  // text for each of many lines would be quadratic); npos if absent.
+  std::size_t find_in(Range r, std::string_view what) const {
+    const std::size_t at = view(r).find(what);
+    return at == std::string_view::npos ? std::string::npos : r.begin + at;
   }
 
   // Finds `token` at paren depth 0 in r; npos if absent.
@@ -442,8 +463,8 @@ class Parser {
       // may, as rolls.
       if (match->key != Key::Axiom && match->key != Key::Ignore &&
           match->key != Key::Consider) {
-        const std::size_t comment = text_.find("//", value.begin);
-        if (comment < value.end) value.end = comment;
+        const std::size_t comment = find_in(value, "//");
+        if (comment != std::string::npos) value.end = comment;
       }
       settings_.push_back(SettingText{match->key, match->extra,
                                       Range{piece.begin, match->key_end},
@@ -524,6 +545,83 @@ class Parser {
     }
   }
 
+  // True if every name in `r` is a constant (`#define` so far, or
+  // `--define`) and the rest is numbers and arithmetic.
+  bool looks_like_value(Range r) const {
+    if (is_value_text(r)) return true;
+    bool has_name = false;
+    for (std::size_t i = r.begin; i < r.end;) {
+      const char c = text_[i];
+      if (!is_word_char(c) || std::isdigit(static_cast<unsigned char>(c))) {
+        if (!is_blank(c) && !std::isdigit(static_cast<unsigned char>(c)) &&
+            std::string_view(".+-*/^()").find(c) == std::string_view::npos) {
+          return false;
+        }
+        ++i;
+        continue;
+      }
+      std::size_t j = i;
+      while (j < r.end && is_word_char(text_[j])) ++j;
+      const std::string_view word = text_.substr(i, j - i);
+      const bool is_constant =
+          std::any_of(defines_.begin(), defines_.end(),
+                      [&](const auto& d) { return view(d.first) == word; }) ||
+          std::any_of(options_.defines.begin(), options_.defines.end(),
+                      [&](const std::string& d) {
+                        return std::string_view(d).substr(0, d.find('=')) ==
+                               word;
+                      });
+      if (!is_constant) return false;
+      has_name = true;
+      i = j;
+    }
+    return has_name;
+  }
+
+  // Fractint writes productions with `=`: `N=O` rewrites N. A one-letter
+  // setting name (`n`, `N`, `δ`) before `=` and something other than a
+  // value (a number, or arithmetic over numbers and constants) is such a
+  // production; before a value it is a setting, and read_settings refuses
+  // it when the file also uses the letter as a module.
+  bool is_one_letter_production(Range line, const KeyMatch& key) const {
+    if (key.key == Key::Axiom || key.key == Key::Extra) return false;
+    const std::string_view name = view(trim(Range{line.begin, key.key_end}));
+    if (code_point_length(name) != name.size() ||
+        text_[key.value_begin - 1] != '=') {
+      return false;
+    }
+    Range value{key.value_begin, split_top(line, ',').front().end};
+    if (const std::size_t comment = find_in(value, "//");
+        comment != std::string::npos) {
+      value.end = comment;  // `n=2 // two steps`
+    }
+    return !looks_like_value(trim(value));
+  }
+
+  // `axiom X`, `n 5`, Fractint's `Angle 6`: a setting's name and a value
+  // without `:` or `=` would otherwise become modules (`axiomX`).
+  void reject_missing_separator(Range line) const {
+    for (const Spelling& s : kSpellings) {
+      const auto end = match_words(line.begin, line.end, s.text);
+      if (!end || *end >= line.end || !is_blank(text_[*end])) continue;
+      const Range value = trim(Range{*end, line.end});
+      const std::string name(view(Range{line.begin, *end}));
+      // A single letter is a setting only before a number (`n 5`, not the
+      // modules `n F`); a declared name is a module.
+      if ((code_point_length(name) == name.size() && !is_value_text(value)) ||
+          declared_modules_.count(name) != 0) {
+        continue;
+      }
+      const std::string v(view(value));
+      std::string hint = "write '" + name + ": " + v + "'";
+      if (s.key == Key::Angle) {
+        hint += " for " + v + " degrees, or 'angle factor: " + v +
+                "' for Fractint's 360/" + v + " degrees";
+      }
+      fail(*end, "missing ':' after '" + name + "': " + hint);
+    }
+  }
+
   // A word before `:`, or a multi-letter word before `= number`, reads as a
   // setting; an ABOP label such as `p1:` does not.
   void reject_unknown_setting(Range line) const {
@@ -534,7 +632,7 @@ class Parser {
     if (word.empty() || i >= line.end) return;
     const std::string_view name = view(word);
     if (std::isdigit(static_cast<unsigned char>(name.front())) != 0 ||
-        strip_label(line).begin != line.begin) {
+        has_abop_label(line)) {
       return;
     }
     if (find_equals(line) == std::string::npos) {
@@ -623,7 +721,8 @@ class Parser {
 
   bool sort_content(Range line, bool indented, bool after_production) {
     if (section_ == Section::Aliases) {
-      if (match_key(line)) {
+      if (const auto key = match_key(line);
+          key && !is_one_letter_production(line, *key)) {
         add_settings(line);
       } else {
         alias_lines_.push_back(line);
@@ -645,7 +744,8 @@ class Parser {
         return false;
       }
     }
-    if (const auto key = match_key(line)) {
+    if (const auto key = match_key(line);
+        key && !is_one_letter_production(line, *key)) {
       has_axiom_setting_ = has_axiom_setting_ || key->key == Key::Axiom;
       add_settings(line);
       return false;
@@ -656,6 +756,7 @@ class Parser {
       productions_.back().rhs.push_back(line);
       return true;
     }
+    reject_missing_separator(line);
     if (!axiom_ && !has_axiom_setting_ && productions_.empty()) {
       axiom_ = line;
       return false;
@@ -721,8 +822,8 @@ class Parser {
       DeclaredName declared{Range{i, j}};
       while (j < names.end && is_blank(text_[j])) ++j;
       if (j < names.end && text_[j] == '(') {
-        const std::size_t close = text_.find(')', j);
-        if (close == std::string::npos || close >= names.end) {
+        const std::size_t close = find_in(Range{j, names.end}, ")");
+        if (close == std::string::npos) {
           fail(j, "unclosed '('");
         }
         const Range inside = trim(Range{j + 1, close});
@@ -740,21 +841,67 @@ class Parser {
 
   // --- Pass 2 -------------------------------------------------------------
 
-  // Strips an ABOP label such as `p1:` or `p_2 :`.
-  Range strip_label(Range lhs) const {
-    lhs = trim(lhs);
-    std::size_t i = lhs.begin;
-    if (i >= lhs.end || text_[i] != 'p') return lhs;
+  // True when a line starts with an ABOP label such as `p1:` or `p_2 :`
+  // (while sorting lines, before names and constants are known).
+  bool has_abop_label(Range line) const {
+    std::size_t i = line.begin;
+    if (i >= line.end || lower(text_[i]) != 'p') return false;
     ++i;
-    if (i < lhs.end && text_[i] == '_') ++i;
+    if (i < line.end && text_[i] == '_') ++i;
     const std::size_t digits = i;
-    while (i < lhs.end && std::isdigit(static_cast<unsigned char>(text_[i]))) {
+    while (i < line.end && std::isdigit(static_cast<unsigned char>(text_[i]))) {
       ++i;
     }
-    if (i == digits) return lhs;
-    while (i < lhs.end && is_blank(text_[i])) ++i;
-    if (i < lhs.end && text_[i] == ':') return trim(Range{i + 1, lhs.end});
-    return lhs;
+    if (i == digits) return false;
+    while (i < line.end && is_blank(text_[i])) ++i;
+    return i < line.end && text_[i] == ':';
+  }
+
+  bool is_label_word(Range r) const {
+    const std::string_view word = view(r);
+    return !word.empty() && std::all_of(word.begin(), word.end(), is_word_char);
+  }
+
+  // True if `r` compiles as an expression of numbers and constants only.
+  bool is_constant_condition(Range r) const {
+    try {
+      (void)parse_expression(source_, r.begin, r.end,
+                             ExpressionScope{.constants = &grammar_.constants});
+      return true;
+    } catch (const ParseError&) {
+      return false;
+    }
+  }
+
+  // Strips a label, `name:` before the production: `p1:`, `P1:`, `r:`.
+  // With two colons the first ends a label (`p1: A(x) : x>1 → …`); with
+  // one, a word before it is a label unless it could be a predecessor
+  // whose condition follows: `A : * → B` has the condition "always", and
+  // `r : t > 1 → B` is refused as ambiguous when `t > 1` is a condition
+  // over constants. A word of several characters that no `module` line
+  // declares cannot be one predecessor, so it is always a label.
+  Range strip_label(Range lhs) const {
+    lhs = trim(lhs);
+    const std::size_t colon = find_top(lhs, ":");
+    if (colon == std::string::npos) return lhs;
+    const Range label = trim(Range{lhs.begin, colon});
+    const Range rest = trim(Range{colon + 1, lhs.end});
+    if (!is_label_word(label)) return lhs;
+    if (find_top(rest, ":") != std::string::npos) return rest;
+    if (view(rest) == "*" || rest.empty()) return lhs;
+    const std::string word(view(label));
+    const bool may_be_predecessor = code_point_length(word) == word.size() ||
+                                    declared_modules_.count(word) != 0;
+    if (may_be_predecessor && is_constant_condition(rest)) {
+      fail(label.begin,
+           "ambiguous ':': '" + word +
+               "' may be a label or a predecessor with the condition '" +
+               std::string(view(rest)) +
+               "'; write 'p1: " + std::string(view(rest)) +
+               " \u2192 \u2026' for a label, 'p1: " + word + " : " +
+               std::string(view(rest)) + " \u2192 \u2026' for a condition");
+    }
+    return rest;
   }
 
   struct Lhs {
@@ -791,6 +938,11 @@ class Parser {
     if (out.predecessor.empty()) {
       fail(lhs.begin, "missing predecessor before the arrow");
     }
+    // cpfg's grammar maps a context that is only `*` to no context at all
+    // (`* < A > * --> AF` rewrites every A); a `*` among other modules is
+    // ABOP's wildcard, one module of any name.
+    if (view(out.left) == "*") out.left = Range{};
+    if (view(out.right) == "*") out.right = Range{};
     return out;
   }
 
@@ -803,8 +955,8 @@ class Parser {
     }
     for (const ProductionText& p : productions_) {
       const Lhs lhs = split_lhs(p.lhs);
-      std::size_t end = text_.find('(', lhs.predecessor.begin);
-      if (end > lhs.predecessor.end) end = lhs.predecessor.end;
+      std::size_t end = find_in(lhs.predecessor, "(");
+      if (end == std::string::npos) end = lhs.predecessor.end;
       const Range name = trim(Range{lhs.predecessor.begin, end});
       if (name.empty()) fail(lhs.predecessor.begin, "missing predecessor");
       for (std::size_t i = name.begin; i < name.end; ++i) {
@@ -821,6 +973,7 @@ class Parser {
     std::unordered_set<std::string> given;
     for (const std::string& define : options_.defines) {
       auto source = std::make_shared<const SourceFile>("--define", define);
+      check_text(*source);
       const std::size_t equals = define.find('=');
       const std::string name =
           define.substr(0, std::min(equals, define.size()));
@@ -967,8 +1120,10 @@ class Parser {
     std::vector<Range> arguments;
   };
 
-  std::vector<RawModule> tokenize(Range r) {
-    std::vector<RawModule> out;
+  // Calls `each` with every module of r in turn, so that a long axiom is
+  // never held as tokens besides its successor.
+  template <typename Each>
+  void tokenize_each(Range r, const Each& each) {
     std::size_t i = r.begin;
     for (;;) {
       while (i < r.end && is_blank(text_[i])) ++i;
@@ -997,19 +1152,27 @@ class Parser {
         }
         i = close + 1;
       }
-      out.push_back(std::move(m));
+      each(std::move(m));
     }
+  }
+
+  std::vector<RawModule> tokenize(Range r) {
+    std::vector<RawModule> out;
+    tokenize_each(r, [&](RawModule&& m) { out.push_back(std::move(m)); });
     return out;
   }
 
-  void check_brackets(
-      const std::vector<std::pair<SymbolId, std::size_t>>& modules,
-      bool allow_unclosed) const {
+  // Brackets must balance; `symbol_at(i)` and `offset_at(i)` give module i.
+  template <typename SymbolAt, typename OffsetAt>
+  void check_brackets(std::size_t count, const SymbolAt& symbol_at,
+                      const OffsetAt& offset_at, bool allow_unclosed) const {
     std::vector<std::size_t> open;
-    for (const auto& [symbol, offset] : modules) {
-      if (symbol == kBranchOpen) open.push_back(offset);
-      if (symbol == kBranchClose) {
-        if (open.empty()) fail(offset, "unbalanced ']': no '[' before it");
+    for (std::size_t i = 0; i < count; ++i) {
+      if (symbol_at(i) == kBranchOpen) open.push_back(offset_at(i));
+      if (symbol_at(i) == kBranchClose) {
+        if (open.empty()) {
+          fail(offset_at(i), "unbalanced ']': no '[' before it");
+        }
         open.pop_back();
       }
     }
@@ -1018,24 +1181,30 @@ class Parser {
     }
   }
 
-  std::vector<ModuleTemplate> modules(const std::vector<Range>& ranges,
-                                      const ExpressionScope& scope) {
-    std::vector<ModuleTemplate> out;
+  Successor modules(const std::vector<Range>& ranges,
+                    const ExpressionScope& scope) {
+    Successor out;
+    // A module takes at least one byte: reserving that many is never too
+    // little, and spares the copies of growing a long axiom.
+    std::size_t bytes = 0;
+    for (const Range& r : ranges) bytes += r.end - r.begin;
+    out.reserve(bytes);
     for (const Range& r : ranges) {
-      for (RawModule& raw : tokenize(r)) {
+      tokenize_each(r, [&](RawModule&& raw) {
         check_arity(raw.symbol, static_cast<int>(raw.arguments.size()),
                     raw.offset);
-        ModuleTemplate m{raw.symbol, {}, raw.offset};
+        std::vector<Expression> parameters;
         for (const Range& arg : raw.arguments) {
-          m.parameters.push_back(
+          parameters.push_back(
               parse_expression(source_, arg.begin, arg.end, scope));
         }
-        out.push_back(std::move(m));
-      }
+        out.push_back(raw.symbol, std::move(parameters), raw.offset);
+      });
     }
-    std::vector<std::pair<SymbolId, std::size_t>> shape;
-    for (const ModuleTemplate& m : out) shape.emplace_back(m.symbol, m.offset);
-    check_brackets(shape, false);
+    out.shrink_to_fit();
+    check_brackets(
+        out.size(), [&](std::size_t i) { return out.symbols()[i]; },
+        [&](std::size_t i) { return out.offset(i); }, false);
     return out;
   }
 
@@ -1043,7 +1212,6 @@ class Parser {
                                      bool allow_brackets,
                                      const char* bracket_error) {
     std::vector<PatternModule> out;
-    std::vector<std::pair<SymbolId, std::size_t>> shape;
     for (const RawModule& raw : tokenize(r)) {
       const bool bracket =
           raw.symbol == kBranchOpen || raw.symbol == kBranchClose;
@@ -1075,9 +1243,10 @@ class Parser {
       }
       out.push_back(PatternModule{
           raw.symbol, static_cast<int>(raw.arguments.size()), raw.offset});
-      shape.emplace_back(raw.symbol, raw.offset);
     }
-    check_brackets(shape, true);
+    check_brackets(
+        out.size(), [&](std::size_t i) { return out[i].symbol; },
+        [&](std::size_t i) { return out[i].offset; }, true);
     return out;
   }
 
@@ -1129,7 +1298,7 @@ class Parser {
     std::string joined;
     for (const Range& r : rhs) joined += view(trim(r));
     if (joined == "*" || joined == "\u03B5") rhs.clear();
-    p.successor = Successor(modules(rhs, scope));
+    p.successor = modules(rhs, scope);
     if (text.section != Section::Productions) {
       const char* what = text.section == Section::Decomposition
                              ? "decomposition"
@@ -1157,14 +1326,13 @@ class Parser {
 
   void read_axiom() {
     if (!axiom_) {
-      throw ParseError(Diagnostic{
-          .file = source_->name(),
-          .message = "no axiom: give one as 'axiom: F', 'ω: F' or a line of "
-                     "modules before the productions"});
+      fail(productions_.empty() ? 0 : trim(productions_.front().lhs).begin,
+           "no axiom: give one as 'axiom: F', '\u03C9: F' or a line of "
+           "modules before the productions");
     }
     const ExpressionScope scope{.constants = &grammar_.constants,
                                 .used_constants = &used_constants_};
-    grammar_.axiom = Successor(modules({*axiom_}, scope));
+    grammar_.axiom = modules({*axiom_}, scope);
     grammar_.axiom_offset = axiom_->begin;
   }
 
@@ -1211,6 +1379,12 @@ class Parser {
                          setting.value.begin});
         continue;
       }
+      std::size_t separator = setting.key_range.end;
+      while (is_blank(text_[separator])) ++separator;
+      if (text_[separator] == '=' && setting.key != Key::Axiom &&
+          code_point_length(key_text) == key_text.size()) {
+        letter_settings_.push_back(setting);
+      }
       const int id = static_cast<int>(setting.key);
       if (const auto it = seen.find(id); it != seen.end()) {
         fail(setting.key_range.begin,
@@ -1246,6 +1420,7 @@ class Parser {
           break;
         case Key::Step:
           s.step = number(v);
+          s.step_offset = v.begin;
           break;
         case Key::Width:
           s.initial_width = positive(v, true);
@@ -1271,7 +1446,7 @@ class Parser {
           s.width_decrement_per_generation = 2.0 * number(v);
           break;
         case Key::Color:
-          s.initial_color = static_cast<int>(whole(v, 1 << 20));
+          s.initial_color = static_cast<int>(whole(v, kMaxColorIndex));
           break;
         case Key::Tropism:
           s.tropism = vector3(v);
@@ -1331,6 +1506,22 @@ class Parser {
     }
   }
 
+  // `N=2` where the file also has a module N reads both as the setting n
+  // and as Fractint's production N → 2.
+  void reject_letter_settings_of_modules() const {
+    for (const SettingText& setting : letter_settings_) {
+      const std::string letter(view(setting.key_range));
+      if (!grammar_.alphabet.find(letter)) continue;
+      const std::string value(view(setting.value));
+      fail(setting.key_range.begin,
+           "ambiguous '" + letter + "=" + value + "': it may set '" + letter +
+               "' or rewrite the module '" + letter +
+               "' that this file uses; write '" + letter + ": " + value +
+               "' for the setting, '" + letter + " \u2192 " + value +
+               "' for a production");
+    }
+  }
+
   glm::dvec3 vector3(Range value) const {
     Range r = value;
     if (view(r).starts_with("(") && view(r).ends_with(")")) {
@@ -1368,6 +1559,7 @@ class Parser {
   Section section_ = Section::Productions;
   std::vector<ProductionText> productions_;
   std::vector<SettingText> settings_;
+  std::vector<SettingText> letter_settings_;  // `n=2`: one letter and `=`
   std::vector<std::pair<Range, Range>> defines_;
   std::vector<Range> module_lines_;
   std::vector<Range> alias_lines_;
@@ -1385,6 +1577,13 @@ class Parser {
 
 Grammar parse_grammar(std::shared_ptr<const SourceFile> source,
                       const ParseOptions& options) {
+  // Successors keep 32-bit source places; files are far smaller
+  // (kMaxSourceBytes), texts given in memory must be too.
+  if (source->text().size() > 0xFFFFFFFFU) {
+    throw ParseError(Diagnostic{.file = source->name(),
+                                .message = "the text is longer than 4 GiB"});
+  }
+  check_text(*source);
   return Parser(std::move(source), options).run();
 }
 

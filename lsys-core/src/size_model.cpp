@@ -61,8 +61,9 @@ class CountMatrix {
 
   SizePrediction predict(int n) {
     Counts v;
-    for (const ModuleTemplate& m : grammar_.axiom.modules()) {
-      add(v, decomposed(kind(m), 0));
+    const Successor& axiom = grammar_.axiom;
+    for (std::size_t i = 0; i < axiom.size(); ++i) {
+      add(v, decomposed(kind(axiom, i), 0));
     }
     // Computing a row may add kinds, so rows are filled on demand.
     std::vector<Counts> rows;
@@ -96,8 +97,9 @@ class CountMatrix {
     index_.emplace(key, kinds_.size() - 1);
     return kinds_.size() - 1;
   }
-  std::size_t kind(const ModuleTemplate& m) {
-    return kind(m.symbol, static_cast<int>(m.parameters.size()));
+  std::size_t kind(const Successor& successor, std::size_t i) {
+    return kind(successor.symbols()[i],
+                static_cast<int>(successor.parameters(i).size()));
   }
 
   Counts identity(std::size_t k) const {
@@ -116,8 +118,8 @@ class CountMatrix {
     for (const Production* rule : rules.rules_for(kinds_[k].first)) {
       if (rule->predecessor.parameter_count != kinds_[k].second) continue;
       Counts result;
-      for (const ModuleTemplate& m : rule->successor.modules()) {
-        add(result, each(kind(m)));
+      for (std::size_t i = 0; i < rule->successor.size(); ++i) {
+        add(result, each(kind(rule->successor, i)));
       }
       if (!is_lower_bound_) return result;  // deterministic: the first rule
       least = least ? entrywise_min(*least, result) : result;
@@ -193,9 +195,11 @@ InterpretationCost InterpretationCosts::cost(SymbolId symbol, int arity,
     for (const Production* rule : homomorphisms_.rules_for(symbol)) {
       if (rule->predecessor.parameter_count != arity) continue;
       InterpretationCost sum;
-      for (const ModuleTemplate& m : rule->successor.modules()) {
+      const Successor& successor = rule->successor;
+      for (std::size_t i = 0; i < successor.size(); ++i) {
         const InterpretationCost c =
-            cost(m.symbol, static_cast<int>(m.parameters.size()), depth + 1);
+            cost(successor.symbols()[i],
+                 static_cast<int>(successor.parameters(i).size()), depth + 1);
         sum.segments = std::min(kHugeCount, sum.segments + c.segments);
         sum.modules = std::min(kHugeCount, sum.modules + c.modules);
       }

@@ -3,7 +3,10 @@
 #include "lsys/source.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -51,17 +54,186 @@ std::string_view SourceFile::line_text(int line) const {
   return std::string_view(text_).substr(start, end - start);
 }
 
-std::shared_ptr<const SourceFile> load_source(
-    const std::filesystem::path& path) {
+std::shared_ptr<const SourceFile> load_source(const std::filesystem::path& path,
+                                              std::size_t max_bytes) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     throw ParseError(Diagnostic{
         .file = path.string(),
         .message = std::string("cannot read file: ") + std::strerror(errno)});
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return std::make_shared<const SourceFile>(path.string(), text.str());
+  // Read in blocks up to one byte past the limit: a device or a pipe may
+  // never end, and a huge file is refused without being held.
+  std::string text;
+  std::array<char, 1U << 16U> block{};
+  while (text.size() <= max_bytes && in) {
+    in.read(block.data(), static_cast<std::streamsize>(std::min(
+                              block.size(), max_bytes + 1 - text.size())));
+    text.append(block.data(), static_cast<std::size_t>(in.gcount()));
+  }
+  if (in.bad()) {
+    throw ParseError(Diagnostic{
+        .file = path.string(),
+        .message = std::string("cannot read file: ") + std::strerror(errno)});
+  }
+  const std::size_t read = text.size();
+  auto source =
+      std::make_shared<const SourceFile>(path.string(), std::move(text));
+  if (read > max_bytes) {
+    // The place where the limit falls, so that a runaway line is shown.
+    const std::size_t removed = read - source->text().size();
+    throw error_at(*source, max_bytes - std::min(max_bytes, removed),
+                   "the file is larger than " + std::to_string(max_bytes) +
+                       " bytes, the limit for a .ls file");
+  }
+  return source;
+}
+
+namespace {
+
+// A UTF-16 or UTF-32 text's first line, as UTF-8, for showing it.
+std::string first_line_of_wide_text(std::string_view text, std::size_t unit,
+                                    bool is_big_endian) {
+  std::string out;
+  for (std::size_t i = 0; i + unit <= text.size() && out.size() < 400;
+       i += unit) {
+    std::uint32_t c = 0;
+    for (std::size_t k = 0; k < unit; ++k) {
+      const auto byte = static_cast<unsigned char>(
+          text[is_big_endian ? i + k : i + unit - 1 - k]);
+      c = (c << 8U) | byte;
+    }
+    if (unit == 2 && c >= 0xD800U && c < 0xDC00U &&
+        i + 2 * unit <= text.size()) {
+      std::uint32_t low = 0;
+      for (std::size_t k = 0; k < unit; ++k) {
+        const std::size_t at = i + unit + (is_big_endian ? k : unit - 1 - k);
+        low = (low << 8U) | static_cast<unsigned char>(text[at]);
+      }
+      c = 0x10000U + ((c - 0xD800U) << 10U) + (low - 0xDC00U);
+      i += unit;
+    }
+    if (c == 0xFEFFU) continue;
+    if (c == '\n' || c == '\r') break;
+    if (c >= 0x110000U) c = 0xFFFDU;
+    if (c < 0x80U) {
+      out += static_cast<char>(c);
+    } else if (c < 0x800U) {
+      out += static_cast<char>(0xC0U | (c >> 6U));
+      out += static_cast<char>(0x80U | (c & 0x3FU));
+    } else if (c < 0x10000U) {
+      out += static_cast<char>(0xE0U | (c >> 12U));
+      out += static_cast<char>(0x80U | ((c >> 6U) & 0x3FU));
+      out += static_cast<char>(0x80U | (c & 0x3FU));
+    } else {
+      out += static_cast<char>(0xF0U | (c >> 18U));
+      out += static_cast<char>(0x80U | ((c >> 12U) & 0x3FU));
+      out += static_cast<char>(0x80U | ((c >> 6U) & 0x3FU));
+      out += static_cast<char>(0x80U | (c & 0x3FU));
+    }
+  }
+  return out;
+}
+
+// Names a wide encoding from its byte order mark or, without one, from the
+// zero bytes that ASCII characters leave in it.
+void refuse_wide_encoding(const SourceFile& source) {
+  const std::string_view t = source.text();
+  if (t.size() < 2) return;
+  const auto at = [&](std::size_t i) {
+    return i < t.size() ? static_cast<unsigned char>(t[i]) : 0xFFU;
+  };
+  std::size_t unit = 0;
+  bool is_big_endian = false;
+  if (at(0) == 0xFF && at(1) == 0xFE && at(2) == 0 && at(3) == 0) {
+    unit = 4;
+  } else if (at(0) == 0 && at(1) == 0 && at(2) == 0xFE && at(3) == 0xFF) {
+    unit = 4;
+    is_big_endian = true;
+  } else if (at(0) == 0xFF && at(1) == 0xFE) {
+    unit = 2;
+  } else if (at(0) == 0xFE && at(1) == 0xFF) {
+    unit = 2;
+    is_big_endian = true;
+  } else if (at(0) != 0 && at(1) == 0 && at(2) == 0 && at(3) == 0) {
+    unit = 4;
+  } else if (at(0) == 0 && at(1) == 0 && at(2) == 0 && at(3) != 0) {
+    unit = 4;
+    is_big_endian = true;
+  } else if (at(0) != 0 && at(1) == 0) {
+    unit = 2;
+  } else if (at(0) == 0 && at(1) != 0) {
+    unit = 2;
+    is_big_endian = true;
+  }
+  if (unit == 0) return;
+  throw ParseError(Diagnostic{
+      .file = source.name(),
+      .line = 1,
+      .column = 1,
+      .message = std::string("the file is UTF-") + (unit == 2 ? "16" : "32") +
+                 (is_big_endian ? " (big-endian)" : " (little-endian)") +
+                 "; save it as UTF-8",
+      .source_line = first_line_of_wide_text(t, unit, is_big_endian)});
+}
+
+// The length of a well-formed UTF-8 sequence at `i` (Unicode's table 3-7),
+// or 0.
+std::size_t utf8_sequence_length(std::string_view t, std::size_t i) {
+  const auto byte = [&](std::size_t k) {
+    return i + k < t.size() ? static_cast<unsigned char>(t[i + k]) : 0U;
+  };
+  const unsigned lead = byte(0);
+  const auto tail = [&](std::size_t k, unsigned low = 0x80U,
+                        unsigned high = 0xBFU) {
+    return byte(k) >= low && byte(k) <= high;
+  };
+  if (lead < 0x80U) return 1;
+  if (lead >= 0xC2U && lead <= 0xDFU) return tail(1) ? 2 : 0;
+  if (lead == 0xE0U) return tail(1, 0xA0U) && tail(2) ? 3 : 0;
+  if (lead == 0xEDU) return tail(1, 0x80U, 0x9FU) && tail(2) ? 3 : 0;
+  if (lead >= 0xE1U && lead <= 0xEFU) return tail(1) && tail(2) ? 3 : 0;
+  if (lead == 0xF0U) return tail(1, 0x90U) && tail(2) && tail(3) ? 4 : 0;
+  if (lead >= 0xF1U && lead <= 0xF3U) {
+    return tail(1) && tail(2) && tail(3) ? 4 : 0;
+  }
+  if (lead == 0xF4U) return tail(1, 0x80U, 0x8FU) && tail(2) && tail(3) ? 4 : 0;
+  return 0;
+}
+
+// `value` in upper-case hexadecimal, `digits` wide.
+std::string hex(unsigned value, int digits) {
+  std::array<char, 16> text{};
+  std::snprintf(text.data(), text.size(), "%0*X", digits, value);
+  return text.data();
+}
+
+}  // namespace
+
+void check_text(const SourceFile& source) {
+  refuse_wide_encoding(source);
+  const std::string_view t = source.text();
+  for (std::size_t i = 0; i < t.size();) {
+    const std::size_t length = utf8_sequence_length(t, i);
+    if (length == 0) {
+      throw error_at(source, i,
+                     "invalid UTF-8 byte 0x" +
+                         hex(static_cast<unsigned char>(t[i]), 2) +
+                         ": save the file as UTF-8");
+    }
+    const auto c = static_cast<unsigned char>(t[i]);
+    // C0 controls but tab and line breaks, DEL, and C1 (U+0080 to U+009F).
+    const bool is_c1 = length == 2 && c == 0xC2U &&
+                       static_cast<unsigned char>(t[i + 1]) < 0xA0U;
+    if ((c < 0x20U && c != '\t' && c != '\n' && c != '\r') || c == 0x7FU ||
+        is_c1) {
+      const unsigned code = is_c1 ? static_cast<unsigned char>(t[i + 1])
+                                  : static_cast<unsigned>(c);
+      throw error_at(source, i,
+                     "control character U+" + hex(code, 4) + " in the text");
+    }
+    i += length;
+  }
 }
 
 }  // namespace lsys

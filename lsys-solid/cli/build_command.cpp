@@ -5,7 +5,9 @@
 #include <unistd.h>
 
 #include <cctype>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -15,6 +17,7 @@
 #include "lsolid/colors.hpp"
 #include "lsolid/errors.hpp"
 #include "lsolid/mesh_io.hpp"
+#include "lsolid/output_file.hpp"
 #include "lsolid/overhang.hpp"
 #include "lsolid/preview.hpp"
 #include "lsolid/solid.hpp"
@@ -289,13 +292,27 @@ int run_build(const BuildCommand& command) {
         .message = "a preview is a PNG: name it FILE.png, not '" +
                    preview.string() + "'"});
   }
-  // Outputs go into folders that exist, checked before the long work.
-  for (const std::filesystem::path& target : {output, preview}) {
-    if (target.empty()) continue;
+  // Outputs are regular files (or links to them, written through) in
+  // folders that exist, checked before the long work: a FIFO or a device
+  // must not be replaced by a file, nor a directory be refused at the end.
+  std::filesystem::path mtl;
+  if (format == MeshFormat::Obj)
+    mtl = std::filesystem::path(output).replace_extension(".mtl");
+  for (const auto& [given, option] :
+       {std::pair{output, "--output"}, std::pair{mtl, "--output"},
+        std::pair{preview, "--preview"}}) {
+    if (given.empty()) continue;
+    std::filesystem::path target;
+    try {
+      target = output_target(given);
+    } catch (const IoError& e) {
+      throw lsys::ParseError(
+          lsys::Diagnostic{.file = option, .message = e.what()});
+    }
     const std::filesystem::path folder =
         target.has_parent_path() ? target.parent_path() : ".";
     if (!std::filesystem::is_directory(folder)) {
-      throw IoError(target.string() + ": no folder " + folder.string());
+      throw IoError(given.string() + ": no folder " + folder.string());
     }
   }
   std::optional<glm::dvec3> bed;
@@ -307,7 +324,11 @@ int run_build(const BuildCommand& command) {
   options.print = print_settings(grammar, command.print);
   options.unite = !command.no_union;
   options.decimate = !command.no_decimate;
-  options.max_triangles = command.max_triangles;
+  if (command.max_triangles) {
+    // A closed mesh has at least 4 triangles; indices are 32 bits.
+    options.max_triangles = static_cast<std::size_t>(parse_whole_number(
+        *command.max_triangles, "--max-triangles", 4, 4294967295U));
+  }
   // 3MF and STL store floats; OFF and OBJ are written to full precision.
   options.float_coordinates =
       format != MeshFormat::Off && format != MeshFormat::Obj;
@@ -375,7 +396,12 @@ int run_build(const BuildCommand& command) {
                  json_report(solid, over, bed, fits, output, written,
                              options.unite, colored, options.print.colors));
     }
-    std::fflush(stdout);
+    // The report goes out before any error on standard error; a report
+    // that cannot be written is an error of its own.
+    if (std::fflush(stdout) != 0) {
+      throw IoError(std::string("cannot write to standard output: ") +
+                    std::strerror(errno));
+    }
   };
   if (!fits && !command.force) {
     finish(false);

@@ -14,6 +14,7 @@
 #include "lsolid/mesh_io.hpp"
 #include "lsolid/validate.hpp"
 #include "pieces.hpp"
+#include "lsys/diagnostic.hpp"
 
 namespace lsolid::cli {
 namespace {
@@ -172,6 +173,14 @@ int run_check(const CheckCommand& command) {
   } catch (const IoError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return 2;
+  }
+  // A file without a triangle is nothing to check, not a printable (or an
+  // unprintable) mesh with bounds of -1e300.
+  std::size_t triangles = 0;
+  for (const ColoredMesh& v : volumes) triangles += v.mesh.triangles.size();
+  if (triangles == 0) {
+    throw lsys::ParseError(lsys::Diagnostic{
+        .file = command.file, .message = "the file holds no triangles"});
   }
   if (volumes.size() > 1) return check_volumes(command, volumes);
   const ValidationReport report =

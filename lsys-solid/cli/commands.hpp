@@ -15,16 +15,28 @@
 
 namespace lsolid::cli {
 
-/// What every command that reads a `.ls` file takes.
+/// What every command that reads a `.ls` file takes. Numbers are kept as
+/// typed and checked by derivation_options, so that `-1` or `1e300` is
+/// refused with the option's name rather than wrapped or rounded.
 struct GrammarInput {
   std::string file;
-  std::optional<int> derivation_length;
-  std::optional<std::uint64_t> seed;
+  std::optional<std::string> derivation_length;  ///< -n
+  std::optional<std::string> seed;
   std::vector<std::string> defines;
-  std::uint64_t max_segments = lsys::DerivationOptions{}.max_segments;
-  std::uint64_t max_modules = lsys::DerivationOptions{}.max_modules;
+  std::optional<std::string> max_segments;
+  std::optional<std::string> max_modules;
+  std::optional<std::string> max_memory;  ///< in MiB
   std::optional<std::string> roll;
 };
+
+/// A whole number typed for an option: decimal digits only, from `least` to
+/// `most`.
+/// @throws lsys::ParseError named after the option, showing the text with a
+///   caret: `expected a whole number from 1 to 9007199254740992, not '-1'`.
+[[nodiscard]] std::uint64_t parse_whole_number(const std::string& text,
+                                               const std::string& option,
+                                               std::uint64_t least,
+                                               std::uint64_t most);
 
 /// Registers FILE, -n, --seed, --define, --max-segments, --max-modules and
 /// (with `with_roll`) --roll on a command.
@@ -38,6 +50,8 @@ void warn_about_polygons(const lsys::Skeleton& skeleton);
 /// Reads the file with the command line's defines.
 /// @throws lsys::ParseError.
 [[nodiscard]] lsys::Grammar load_grammar(const GrammarInput& input);
+/// The command line's derivation options, checked.
+/// @throws lsys::ParseError for a number out of range.
 [[nodiscard]] lsys::DerivationOptions derivation_options(
     const GrammarInput& input);
 [[nodiscard]] lsys::InterpretOptions interpret_options(
@@ -89,7 +103,7 @@ struct BuildCommand {
   bool no_union = false;
   bool no_decimate = false;
   bool multi_material = false;  ///< one volume per colour (3MF, OBJ)
-  std::optional<std::size_t> max_triangles;
+  std::optional<std::string> max_triangles;  ///< as typed
   std::string preview;  ///< a PNG to render the written mesh to, or empty
   std::optional<std::string> bed;  ///< the build volume, `220x220x250mm`
   bool force = false;              ///< write even if it does not fit the bed
@@ -108,7 +122,8 @@ struct CheckCommand {
   bool one_piece = false;  ///< separate pieces make the verdict "not"
 };
 /// Returns 0 when printable (and one piece, with `one_piece`), 1 when not,
-/// 2 when unreadable.
+/// 2 when it cannot be read.
+/// @throws lsys::ParseError for a malformed file or one without triangles.
 int run_check(const CheckCommand& command);
 
 }  // namespace lsolid::cli

@@ -1,12 +1,14 @@
 // Copyright 2026 the lsolid authors
 // SPDX-License-Identifier: MIT
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <vector>
 
 #include "commands.hpp"
 #include "json.hpp"
 #include "lsolid/units.hpp"
+#include "lsys/diagnostic.hpp"
 #include "lsys/module_string.hpp"
 #include "lsys/parser.hpp"
 #include "lsys/source.hpp"
@@ -21,24 +23,34 @@ void add_grammar_options(CLI::App& command, GrammarInput& input, bool with_roll,
   if (is_file_required) file->required();
   command
       .add_option("-n,--derivation-length", input.derivation_length,
-                  "derivation steps, overriding the file's n")
-      ->check(CLI::Range(0, 10000));
+                  "derivation steps (0 to 10000), overriding the file's n")
+      ->type_name("N");
   command
       .add_option("--seed", input.seed,
-                  "seed of stochastic productions, overriding the file's")
-      ->check(CLI::Range(0.0, 9007199254740992.0));
+                  "seed of stochastic productions (0 to 2^53), overriding "
+                  "the file's")
+      ->type_name("N");
   command
       .add_option("--define", input.defines,
                   "NAME=VALUE: set a constant, overriding #define")
       ->allow_extra_args(false);
+  const lsys::DerivationOptions defaults;
   command
       .add_option("--max-segments", input.max_segments,
-                  "refuse to draw more segments than this")
-      ->capture_default_str();
+                  "refuse to draw more segments than this (default " +
+                      std::to_string(defaults.max_segments) + ")")
+      ->type_name("N");
   command
       .add_option("--max-modules", input.max_modules,
-                  "refuse to derive longer strings than this")
-      ->capture_default_str();
+                  "refuse to derive longer strings than this (default " +
+                      std::to_string(defaults.max_modules) + ")")
+      ->type_name("N");
+  command
+      .add_option("--max-memory", input.max_memory,
+                  "refuse to hold a derived string whole (contexts, cuts) in "
+                  "more MiB than this (default " +
+                      std::to_string(defaults.max_memory_bytes >> 20U) + ")")
+      ->type_name("MIB");
   if (with_roll) {
     command
         .add_option("--roll", input.roll,
@@ -103,11 +115,52 @@ PrintSettings print_settings(const lsys::Grammar& grammar,
       input.base.has_value(), input.colors.has_value());
 }
 
+std::uint64_t parse_whole_number(const std::string& text,
+                                 const std::string& option, std::uint64_t least,
+                                 std::uint64_t most) {
+  std::uint64_t value = 0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  // from_chars takes no sign, space or exponent; it reports overflow.
+  if (text.empty() || error != std::errc() || stop != end || value < least ||
+      value > most) {
+    throw lsys::ParseError(lsys::Diagnostic{
+        .file = option,
+        .line = 1,
+        .column = 1,
+        .message = "expected a whole number from " + std::to_string(least) +
+                   " to " + std::to_string(most) + ", not '" + text + "'",
+        .source_line = text});
+  }
+  return value;
+}
+
 lsys::DerivationOptions derivation_options(const GrammarInput& input) {
-  return {.derivation_length = input.derivation_length,
-          .seed = input.seed,
-          .max_segments = input.max_segments,
-          .max_modules = input.max_modules};
+  // Limits up to 2^53 compare exactly with the size model's doubles.
+  constexpr std::uint64_t kMostLimit = std::uint64_t{1} << 53U;
+  lsys::DerivationOptions options;
+  if (input.derivation_length) {
+    options.derivation_length = static_cast<int>(parse_whole_number(
+        *input.derivation_length, "--derivation-length", 0, 10000));
+  }
+  if (input.seed) {
+    options.seed = parse_whole_number(*input.seed, "--seed", 0, kMostLimit);
+  }
+  if (input.max_segments) {
+    options.max_segments = parse_whole_number(*input.max_segments,
+                                              "--max-segments", 1, kMostLimit);
+  }
+  if (input.max_modules) {
+    options.max_modules =
+        parse_whole_number(*input.max_modules, "--max-modules", 1, kMostLimit);
+  }
+  if (input.max_memory) {
+    options.max_memory_bytes =
+        parse_whole_number(*input.max_memory, "--max-memory", 1,
+                           std::uint64_t{1} << 30U)
+        << 20U;
+  }
+  return options;
 }
 
 lsys::InterpretOptions interpret_options(const GrammarInput& input) {

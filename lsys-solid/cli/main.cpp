@@ -3,8 +3,13 @@
 //
 // The lsolid command line: a client of lsys-core and lsys-solid, and the one
 // place where errors become messages and exit codes (docs/cli.md).
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
+#include <array>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 
 #include "commands.hpp"
@@ -34,6 +39,12 @@ Documentation: docs/cli.md, docs/language.md, docs/turtle.md.)";
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Reports are held until the end and written by one flush, whose failure
+  // then names its cause (a full disk); a terminal keeps its line buffer.
+  static std::array<char, std::size_t{1} << 16U> report_buffer{};
+  if (::isatty(STDOUT_FILENO) == 0) {
+    std::setvbuf(stdout, report_buffer.data(), _IOFBF, report_buffer.size());
+  }
   CLI::App app{"lsolid turns Lindenmayer systems into 3D-printable solids."};
   app.footer(kExamples);
   app.set_version_flag("--version", "lsolid " LSOLID_VERSION);
@@ -74,9 +85,9 @@ int main(int argc, char** argv) {
       "keep every triangle of the union (decimation is on by default, within "
       "--tolerance)");
   app.add_option("--max-triangles", build.max_triangles,
-                 "decimate to at most N triangles, beyond --tolerance if "
-                 "need be (never at the cost of validity)")
-      ->check(CLI::PositiveNumber)
+                 "decimate to at most N triangles (4 to 4294967295), beyond "
+                 "--tolerance if need be (never at the cost of validity)")
+      ->type_name("N")
       ->excludes(no_decimate);
   lsolid::cli::add_print_options(app, build.print);
 
@@ -114,16 +125,28 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : kExitInput;
   }
 
-  if (check_app->parsed()) return lsolid::cli::run_check(check);
-  const bool is_build = !derive_app->parsed() && !skeleton_app->parsed();
+  const bool is_build =
+      !check_app->parsed() && !derive_app->parsed() && !skeleton_app->parsed();
   if (is_build && build.input.file.empty()) {
     std::fputs(app.help().c_str(), stderr);
     return kExitInput;
   }
   try {
+    int code = 0;
+    if (check_app->parsed()) code = lsolid::cli::run_check(check);
     if (derive_app->parsed()) lsolid::cli::run_derive(derive);
     if (skeleton_app->parsed()) lsolid::cli::run_skeleton(skeleton);
-    if (is_build) return lsolid::cli::run_build(build);
+    if (is_build) code = lsolid::cli::run_build(build);
+    // A report that could not be written is lost, whatever else succeeded
+    // (`lsolid x.ls > /dev/full`).
+    errno = 0;
+    if (std::fflush(stdout) != 0 || std::ferror(stdout) != 0) {
+      std::fprintf(stderr, "error: cannot write to standard output%s%s\n",
+                   errno != 0 ? ": " : "",
+                   errno != 0 ? std::strerror(errno) : "");
+      return kExitIo;
+    }
+    return code;
   } catch (const lsys::ParseError& e) {
     std::fputs(lsys::format_diagnostic(e.diagnostic()).c_str(), stderr);
     return kExitInput;
@@ -137,5 +160,4 @@ int main(int argc, char** argv) {
     std::fputs("error: out of memory\n", stderr);
     return kExitGeometry;
   }
-  return 0;
 }

@@ -108,14 +108,18 @@ void run_skeleton(const SkeletonCommand& command) {
       lsys::interpret(grammar, derivation_options(command.input),
                       interpret_options(command.input));
   warn_about_polygons(skeleton);
+  const PrintInput& p = command.print;
+  const bool in_mm = p.wall || p.height || p.size || p.scale;
+  // Nothing drawn cannot be scaled: bad input, placed, as for a build.
+  if (in_mm && skeleton.segments.empty() && skeleton.polygons.empty()) {
+    throw lsys::nothing_drawn_error(grammar, skeleton);
+  }
   if (skeleton.segments.empty() && skeleton.polygons.empty()) {
     std::fputs(
         "warning: nothing is drawn; modules without a turtle meaning draw "
         "nothing (map them with an alias block, e.g. 'aliases: Fl=F Fr=F')\n",
         stderr);
   }
-  const PrintInput& p = command.print;
-  const bool in_mm = p.wall || p.height || p.size || p.scale;
   if (in_mm) {
     skeleton = scale_to_print(skeleton, print_settings(grammar, p)).skeleton;
   }

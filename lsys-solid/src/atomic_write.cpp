@@ -13,6 +13,7 @@
 #include <cstring>
 
 #include "lsolid/errors.hpp"
+#include "lsolid/output_file.hpp"
 
 namespace lsolid {
 namespace {
@@ -22,10 +23,54 @@ namespace {
   throw IoError(path.string() + ": " + what);
 }
 
+const char* kind_of(std::filesystem::file_type type) {
+  switch (type) {
+    case std::filesystem::file_type::directory:
+      return "a directory";
+    case std::filesystem::file_type::fifo:
+      return "a FIFO (named pipe)";
+    case std::filesystem::file_type::character:
+    case std::filesystem::file_type::block:
+      return "a device";
+    case std::filesystem::file_type::socket:
+      return "a socket";
+    default:
+      return "not a regular file";
+  }
+}
+
 }  // namespace
 
-void write_file_atomically(const std::filesystem::path& path,
+std::filesystem::path output_target(const std::filesystem::path& path) {
+  // Renaming over a link would replace the link with a file; follow it
+  // (at most 40 links, as the kernel does) and write its target instead.
+  constexpr int kMostLinks = 40;
+  std::filesystem::path target = path;
+  for (int links = 0;; ++links) {
+    std::error_code error;
+    const auto status = std::filesystem::symlink_status(target, error);
+    if (error || status.type() == std::filesystem::file_type::not_found) {
+      return target;
+    }
+    if (status.type() == std::filesystem::file_type::regular) return target;
+    if (status.type() != std::filesystem::file_type::symlink) {
+      throw IoError(
+          "'" + path.string() + "' is " + (target == path ? "" : "a link to ") +
+          kind_of(status.type()) + "; lsolid writes only regular files");
+    }
+    if (links == kMostLinks) {
+      throw IoError("'" + path.string() +
+                    "' is a symbolic link in a loop; lsolid writes only "
+                    "regular files");
+    }
+    const std::filesystem::path next = std::filesystem::read_symlink(target);
+    target = next.is_absolute() ? next : target.parent_path() / next;
+  }
+}
+
+void write_file_atomically(const std::filesystem::path& requested,
                            const std::string& data) {
+  const std::filesystem::path path = output_target(requested);
   std::filesystem::path folder = path.parent_path();
   if (folder.empty()) folder = ".";
   // A hidden temporary beside the target, so that rename stays on one file

@@ -6,8 +6,10 @@
 // is encoded by lib3mf in mesh_3mf.cpp.
 #include "lsolid/mesh_io.hpp"
 
+#include <array>
 #include <cctype>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -20,6 +22,8 @@
 
 #include "atomic_write.hpp"
 #include "lsolid/errors.hpp"
+#include "lsys/diagnostic.hpp"
+#include "lsys/source.hpp"
 #include "mesh_3mf.hpp"
 #include "vertex_key.hpp"
 
@@ -29,6 +33,25 @@ namespace {
 [[noreturn]] void fail(const std::filesystem::path& path,
                        const std::string& what) {
   throw IoError(path.string() + ": " + what);
+}
+
+// Malformed content is bad input (lsys::ParseError): in a text format at
+// its line and column, shown with the line and a caret; the text is copied
+// into a SourceFile only then.
+[[noreturn]] void malformed(const std::filesystem::path& path,
+                            const std::string& data, std::size_t offset,
+                            const std::string& message) {
+  const lsys::SourceFile source(path.string(), data);
+  // SourceFile drops a UTF-8 byte order mark.
+  const std::size_t removed = data.size() - source.text().size();
+  throw lsys::error_at(source, offset - std::min(offset, removed), message);
+}
+
+// Malformed content of a binary format, or of the file as a whole.
+[[noreturn]] void malformed(const std::filesystem::path& path,
+                            const std::string& message) {
+  throw lsys::ParseError(
+      lsys::Diagnostic{.file = path.string(), .message = message});
 }
 
 std::string lower_extension(const std::filesystem::path& path) {
@@ -62,7 +85,8 @@ TriangleMesh read_binary_stl(const std::string& data,
                              const std::filesystem::path& path) {
   std::uint32_t count = 0;
   std::memcpy(&count, data.data() + 80, 4);
-  if (data.size() != 84 + 50ULL * count) fail(path, "truncated binary STL");
+  if (data.size() != 84 + 50ULL * count)
+    malformed(path, "truncated binary STL");
   SoupBuilder soup;
   for (std::uint32_t i = 0; i < count; ++i) {
     const char* record = data.data() + 84 + 50ULL * i;
@@ -73,8 +97,8 @@ TriangleMesh read_binary_stl(const std::string& data,
       corners[k] = {xyz[3 * k], xyz[3 * k + 1], xyz[3 * k + 2]};
       if (!std::isfinite(corners[k].x) || !std::isfinite(corners[k].y) ||
           !std::isfinite(corners[k].z)) {
-        fail(path,
-             "triangle " + std::to_string(i) + " has a non-finite vertex");
+        malformed(path,
+                  "triangle " + std::to_string(i) + " has a non-finite vertex");
       }
     }
     soup.add(corners);
@@ -82,55 +106,159 @@ TriangleMesh read_binary_stl(const std::string& data,
   return soup.take();
 }
 
+// The words of a text format, separated by white space, with their places.
+class Words {
+ public:
+  Words(const std::string& data, const std::filesystem::path& path)
+      : data_(data), path_(path) {}
+
+  std::string_view next() {
+    while (at_ < data_.size() &&
+           std::isspace(static_cast<unsigned char>(data_[at_])) != 0) {
+      ++at_;
+    }
+    begin_ = at_;
+    while (at_ < data_.size() &&
+           std::isspace(static_cast<unsigned char>(data_[at_])) == 0) {
+      ++at_;
+    }
+    return std::string_view(data_).substr(begin_, at_ - begin_);
+  }
+  void skip_line() {
+    while (at_ < data_.size() && data_[at_] != '\n') ++at_;
+  }
+  // Refuses the word last read: `expected X, not 'word'`.
+  [[noreturn]] void refuse(const std::string& expected,
+                           std::string_view word) const {
+    if (word.empty()) {
+      malformed(path_, "the file ends where " + expected + " should follow");
+    }
+    // A word is shown up to 32 characters (a binary file may have none).
+    std::string shown(word.substr(0, 32));
+    if (word.size() > 32) shown += "...";
+    malformed(path_, data_, begin_,
+              "expected " + expected + ", not '" + shown + "'");
+  }
+  [[noreturn]] void refuse_here(const std::string& message) const {
+    malformed(path_, data_, begin_, message);
+  }
+  void expect(std::string_view word) {
+    const std::string_view got = next();
+    // (Appending piecewise avoids a GCC 12 -Wrestrict false alarm.)
+    if (got != word) refuse(std::string(1, '\'').append(word).append("'"), got);
+  }
+  double number(bool must_be_finite) {
+    const std::string_view word = next();
+    double value = 0.0;
+    const auto [end, error] =
+        std::from_chars(word.data(), word.data() + word.size(), value);
+    if (word.empty() || error != std::errc() ||
+        end != word.data() + word.size() ||
+        (must_be_finite && !std::isfinite(value))) {
+      refuse(must_be_finite ? "a finite number" : "a number", word);
+    }
+    return value;
+  }
+  // A whole number from 0 to `most` of `things`, where a count is
+  // `expected`.
+  std::size_t count(const std::string& expected, const std::string& things,
+                    std::size_t most) {
+    const std::string_view word = next();
+    std::size_t value = 0;
+    const auto [end, error] =
+        std::from_chars(word.data(), word.data() + word.size(), value);
+    if (word.empty() || error != std::errc() ||
+        end != word.data() + word.size()) {
+      refuse(expected, word);
+    }
+    if (value > most) {
+      refuse_here(std::string(word) + " " + things +
+                  " do not fit in a file of " + std::to_string(data_.size()) +
+                  " bytes");
+    }
+    return value;
+  }
+
+ private:
+  const std::string& data_;
+  const std::filesystem::path& path_;
+  std::size_t at_ = 0;
+  std::size_t begin_ = 0;
+};
+
+// ASCII STL word by word, as its grammar has it: `solid name`, then per
+// facet `facet normal nx ny nz`, `outer loop`, three `vertex x y z`,
+// `endloop`, `endfacet`, and `endsolid name` (several solids may follow
+// one another). Anything else is refused at its place, rather than
+// skipped: a file of nonsense after `solid` read as no triangles at all.
 TriangleMesh read_ascii_stl(const std::string& data,
                             const std::filesystem::path& path) {
-  std::istringstream in(data);
-  std::string word;
+  Words words(data, path);
   SoupBuilder soup;
-  std::array<glm::dvec3, 3> corners;
-  int corner = 0;
-  while (in >> word) {
-    if (word != "vertex") continue;
-    glm::dvec3 p;
-    if (!(in >> p.x >> p.y >> p.z)) fail(path, "bad vertex in ASCII STL");
-    corners[static_cast<std::size_t>(corner++)] = p;
-    if (corner == 3) {
+  bool has_solid = false;
+  for (std::string_view word = words.next(); !word.empty() || !has_solid;
+       word = words.next()) {
+    if (word != "solid") words.refuse("'solid'", word);
+    has_solid = true;
+    words.skip_line();  // the name
+    for (;;) {
+      word = words.next();
+      if (word == "endsolid") break;
+      if (word != "facet") words.refuse("'facet' or 'endsolid'", word);
+      words.expect("normal");
+      // Normals are recomputed; some exporters write nan there.
+      for (int k = 0; k < 3; ++k) (void)words.number(false);
+      words.expect("outer");
+      words.expect("loop");
+      std::array<glm::dvec3, 3> corners;
+      for (glm::dvec3& p : corners) {
+        words.expect("vertex");
+        p = {words.number(true), words.number(true), words.number(true)};
+      }
+      words.expect("endloop");
+      words.expect("endfacet");
       soup.add(corners);
-      corner = 0;
     }
+    words.skip_line();
   }
-  if (corner != 0)
-    fail(path, "a facet of the ASCII STL has fewer than 3 vertices");
   return soup.take();
 }
 
+// OFF: `OFF`, the counts of vertices, faces and edges, the vertices, and
+// each face as its corner count and corners (anything after them on its
+// line, a colour, is skipped). Counts beyond what the file can hold (a
+// vertex takes at least 6 bytes, a face 8) are refused before anything is
+// allocated for them.
 TriangleMesh read_off(const std::string& data,
                       const std::filesystem::path& path) {
-  std::istringstream in(data);
-  std::string header;
-  in >> header;
-  std::size_t vertex_count = 0;
-  std::size_t face_count = 0;
-  std::size_t edge_count = 0;
-  if (!(in >> vertex_count >> face_count >> edge_count)) {
-    fail(path, "bad OFF header");
-  }
+  Words words(data, path);
+  const std::string_view header = words.next();
+  if (header != "OFF") words.refuse("'OFF'", header);
+  const std::size_t vertex_count =
+      words.count("the number of vertices", "vertices", data.size() / 6);
+  const std::size_t face_count =
+      words.count("the number of faces", "faces", data.size() / 8);
+  (void)words.count("the number of edges", "edges", data.size());
   TriangleMesh mesh;
   mesh.vertices.resize(vertex_count);
   for (glm::dvec3& p : mesh.vertices) {
-    if (!(in >> p.x >> p.y >> p.z)) fail(path, "bad OFF vertex");
+    p = {words.number(true), words.number(true), words.number(true)};
   }
   for (std::size_t f = 0; f < face_count; ++f) {
-    std::size_t n = 0;
-    if (!(in >> n) || n < 3) fail(path, "bad OFF face " + std::to_string(f));
+    const std::size_t n =
+        words.count("the number of corners", "corners", data.size() / 2);
+    if (n < 3) words.refuse_here("a face needs at least 3 corners");
     std::vector<std::uint32_t> polygon(n);
     for (std::uint32_t& v : polygon) {
-      if (!(in >> v) || v >= vertex_count) {
-        fail(path, "bad vertex index in OFF face " + std::to_string(f));
+      v = static_cast<std::uint32_t>(
+          words.count("a vertex index", "vertices", data.size()));
+      if (v >= vertex_count) {
+        words.refuse_here("no vertex " + std::to_string(v) + ": the file has " +
+                          std::to_string(vertex_count));
       }
     }
-    in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
-    for (std::size_t k = 1; k + 1 < n; ++k) {  // fan: OFF faces are convex
+    words.skip_line();
+    for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {  // a convex fan
       mesh.triangles.push_back({polygon[0], polygon[k], polygon[k + 1]});
     }
   }
@@ -287,18 +415,21 @@ std::vector<ColoredMesh> read_obj(const std::string& data,
   std::vector<ColoredMesh> volumes(1);
   std::unordered_map<std::uint32_t, std::uint32_t> local;
   int color = 0;
-  std::size_t number = 0;
+  std::size_t next_line = 0;
   while (std::getline(in, line)) {
-    ++number;
+    const std::size_t start = next_line;
+    next_line += line.size() + 1;
     std::istringstream words(line);
     std::string tag;
     words >> tag;
     const auto bad = [&](const std::string& what) {
-      fail(path, "line " + std::to_string(number) + ": " + what);
+      const std::size_t tag_at = line.find_first_not_of(" \t");
+      malformed(path, data, start + (tag_at == std::string::npos ? 0 : tag_at),
+                what);
     };
     if (tag == "v") {
       glm::dvec3 p;
-      if (!(words >> p.x >> p.y >> p.z)) bad("bad vertex");
+      if (!(words >> p.x >> p.y >> p.z)) bad("a vertex is 'v' and 3 numbers");
       points.push_back(p);
     } else if (tag == "o" || tag == "g") {
       if (!volumes.back().mesh.triangles.empty()) {
@@ -408,7 +539,19 @@ std::string encode_obj(const std::vector<ColoredMesh>& volumes,
   return out;
 }
 
+// Only regular files are read: a FIFO would block and a device such as
+// /dev/zero never end.
+void refuse_special_file(const std::filesystem::path& path) {
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (!error && std::filesystem::exists(status) &&
+      !std::filesystem::is_regular_file(status)) {
+    fail(path, "cannot read: not a regular file");
+  }
+}
+
 std::string read_file(const std::filesystem::path& path) {
+  refuse_special_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, std::string("cannot read: ") + std::strerror(errno));
   std::ostringstream buffer;
@@ -441,19 +584,31 @@ TriangleMesh read_mesh(const std::filesystem::path& path) {
   if (ext == ".3mf" || ext == ".obj") return merged(read_colored(path));
   const std::string data = read_file(path);
   if (data.starts_with("OFF") || ext == ".off") return read_off(data, path);
+  std::uint32_t count = 0;
   if (data.size() >= 84) {
-    std::uint32_t count = 0;
     std::memcpy(&count, data.data() + 80, 4);
     if (data.size() == 84 + 50ULL * count) return read_binary_stl(data, path);
   }
-  if (data.starts_with("solid")) return read_ascii_stl(data, path);
-  fail(path, "not an STL or OFF file");
+  // Binary STL headers often start with "solid" too, but hold NUL bytes.
+  const bool is_text =
+      data.substr(0, std::min<std::size_t>(data.size(), 1024)).find('\0') ==
+      std::string::npos;
+  if (data.starts_with("solid") && is_text) return read_ascii_stl(data, path);
+  if (data.size() >= 84 && !is_text) {
+    malformed(path, "a damaged binary STL: its header counts " +
+                        std::to_string(count) + " triangles (" +
+                        std::to_string(84 + 50ULL * count) +
+                        " bytes), the file has " + std::to_string(data.size()) +
+                        " bytes");
+  }
+  malformed(path, "not an STL or OFF file");
 }
 
 std::vector<ColoredMesh> read_colored(const std::filesystem::path& path) {
   const std::string ext = lower_extension(path);
   if (ext == ".3mf") {
     if (!std::filesystem::exists(path)) fail(path, "cannot read: no such file");
+    refuse_special_file(path);
     return decode_3mf(path);
   }
   if (ext == ".obj") return read_obj(read_file(path), path);

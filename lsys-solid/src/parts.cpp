@@ -1341,10 +1341,12 @@ class PartBuilder {
 
 int tube_sides(double radius_mm, double tolerance_mm) {
   // The flat sides touch the circle; the corners stand out by
-  // r (1 / cos(π/m) - 1), which must stay within the tolerance.
+  // r (1 / cos(π/m) - 1), which must stay within the tolerance. Clamped
+  // before converting: a tolerance far below the radius makes the step 0
+  // and the quotient infinite, which no int holds.
   const double step = std::acos(radius_mm / (radius_mm + tolerance_mm));
   if (!(step > 0.0)) return 128;
-  return std::clamp(static_cast<int>(std::ceil(kPi / step)), 6, 128);
+  return static_cast<int>(std::clamp(std::ceil(kPi / step), 6.0, 128.0));
 }
 
 double tube_corner_radius(double radius_mm, double tolerance_mm) {

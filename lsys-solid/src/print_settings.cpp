@@ -32,7 +32,10 @@ Base parse_base(const std::string& text, const std::string& what) {
   if (text == "none") return Base::None;
   throw lsys::ParseError(lsys::Diagnostic{
       .file = what,
-      .message = "base must be auto, disc or none, not '" + text + "'"});
+      .line = 1,
+      .column = 1,
+      .message = "base must be auto, disc or none, not '" + text + "'",
+      .source_line = text});
 }
 
 std::vector<Rgb> parse_colors(const std::string& text,

@@ -443,6 +443,32 @@ std::optional<std::string> fills_its_box(const SolidReport& report,
 
 }  // namespace
 
+// The scale asked for (`--scale`) may carry a huge drawing (`F(1e300)`)
+// far past any printer, where grid keys and exact arithmetic overflow:
+// refuse a model reaching beyond a kilometre as bad input.
+void refuse_beyond_a_kilometre(const lsys::Grammar& grammar,
+                               const ScaledSkeleton& scaled) {
+  constexpr double kMostMm = 1e6;
+  double reach = 0.0;
+  const auto grow = [&](const glm::dvec3& p, double radius) {
+    reach = std::max({reach, std::fabs(p.x) + radius, std::fabs(p.y) + radius,
+                      std::fabs(p.z) + radius});
+  };
+  for (const lsys::Segment& s : scaled.skeleton.segments) {
+    grow(s.p0, s.start_diameter / 2.0);
+    grow(s.p1, s.end_diameter / 2.0);
+  }
+  for (const lsys::Polygon& polygon : scaled.skeleton.polygons) {
+    for (const glm::dvec3& p : polygon.points) grow(p, 0.0);
+  }
+  if (reach <= kMostMm) return;
+  throw lsys::error_at(*grammar.source, grammar.axiom_offset,
+                       fmt::format("at {:g} mm per unit the model reaches "
+                                   "{:g} mm from its origin, more than the 1 "
+                                   "km (1000000 mm) lsolid builds",
+                                   scaled.mm_per_unit, reach));
+}
+
 Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   Solid solid;
   SolidReport& report = solid.report;
@@ -453,6 +479,10 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   tell("skeleton", 0.0);
   const lsys::Skeleton skeleton =
       lsys::interpret(grammar, options.derivation, options.interpretation);
+  // Drawing nothing is a mistake in the input, placed where it is made.
+  if (skeleton.segments.empty() && skeleton.polygons.empty()) {
+    throw lsys::nothing_drawn_error(grammar, skeleton);
+  }
   report.segments = skeleton.segments.size();
   report.polygons = skeleton.polygons.size();
   report.dropped.degenerate_polygons = skeleton.degenerate_polygons;
@@ -477,6 +507,7 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   double actual = 0.0;
   for (int pass = 0; pass < kSizePasses; ++pass) {
     scaled = scale_to_print(skeleton, print);
+    refuse_beyond_a_kilometre(grammar, scaled);
     parts =
         build_parts(scaled.skeleton,
                     {.wall_mm = print.wall_mm,

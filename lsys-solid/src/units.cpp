@@ -36,6 +36,12 @@ double parse_length_mm(std::string_view text, const std::string& what) {
       throw lsys::error_at(source, begin,
                            "a length must be a positive, finite number");
     }
+    // No printer is a kilometre wide; `1e308in` would not even be finite.
+    constexpr double kMostMm = 1e6;
+    if (value * factor > kMostMm) {
+      throw lsys::error_at(source, begin,
+                           "a length must be at most 1000000 mm (1 km)");
+    }
     return value * factor;
   }
   throw lsys::error_at(
@@ -57,7 +63,10 @@ glm::dvec3 parse_bed_mm(std::string_view text, const std::string& what) {
   if (sides.size() != 3) {
     throw lsys::ParseError(lsys::Diagnostic{
         .file = what,
-        .message = "a bed is WIDTHxDEPTHxHEIGHT, such as 220x220x250mm"});
+        .line = 1,
+        .column = 1,
+        .message = "a bed is WIDTHxDEPTHxHEIGHT, such as 220x220x250mm",
+        .source_line = std::string(text)});
   }
   std::size_t unit_at = sides[2].size();
   while (unit_at > 0 &&

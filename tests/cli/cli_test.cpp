@@ -1,13 +1,20 @@
 // Copyright 2026 the lsolid authors
 // SPDX-License-Identifier: MIT
 #include <gtest/gtest.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/un.h>
 
 #include <algorithm>
 #include <array>
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <set>
+#include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "support/run_command.hpp"
 
@@ -106,6 +113,85 @@ TEST(Cli, ReportsABadDefineWithACaret) {
                   kSource / "printables");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "--define:1:4: error: bad number '0.5.5'\nr2=0.5.5\n   ^\n");
+}
+
+TEST(Cli, RefusesAnyNumericOptionOutOfItsRangeWithAPlainMessage) {
+  // `-1` wrapped to 1.8e19 and disabled the limit; `--max-triangles 0`
+  // printed a 300-digit range.
+  struct Case {
+    std::string args;
+    std::string option;
+    std::string range;
+    std::string value;
+  };
+  const std::string most = "9007199254740992";
+  for (const Case& c : std::vector<Case>{
+           {"derive --max-segments -1", "--max-segments", "1 to " + most, "-1"},
+           {"derive --max-modules -1", "--max-modules", "1 to " + most, "-1"},
+           {"skeleton --max-segments 0", "--max-segments", "1 to " + most, "0"},
+           {"derive --max-modules 18446744073709551616", "--max-modules",
+            "1 to " + most, "18446744073709551616"},
+           {"derive -n 1e300", "--derivation-length", "0 to 10000", "1e300"},
+           {"skeleton -n 3.5", "--derivation-length", "0 to 10000", "3.5"},
+           {"derive --seed -1", "--seed", "0 to " + most, "-1"},
+           {"derive --seed 9007199254740993", "--seed", "0 to " + most,
+            "9007199254740993"},
+           {"derive --max-memory 0", "--max-memory", "1 to 1073741824", "0"},
+           {"--max-triangles 0", "--max-triangles", "4 to 4294967295", "0"},
+           {"--max-triangles 1e3", "--max-triangles", "4 to 4294967295",
+            "1e3"}}) {
+    const std::string command = c.args.starts_with("-")
+                                    ? "hilbert-cube.ls " + c.args + " -o x.stl"
+                                    : c.args.substr(0, c.args.find(' ')) +
+                                          " hilbert-cube.ls" +
+                                          c.args.substr(c.args.find(' '));
+    const auto r =
+        run_command(lsolid() + " " + command, kSource / "printables");
+    EXPECT_EQ(r.exit_code, 2) << command;
+    EXPECT_EQ(r.err, c.option + ":1:1: error: expected a whole number from " +
+                         c.range + ", not '" + c.value + "'\n" + c.value +
+                         "\n^\n")
+        << command;
+    EXPECT_EQ(r.out, "") << command;
+  }
+  EXPECT_FALSE(std::filesystem::exists(kSource / "printables/x.stl"));
+  const auto wall =
+      run_command(lsolid() + " skeleton hilbert-cube.ls --wall 1e308in",
+                  kSource / "printables");
+  EXPECT_EQ(wall.exit_code, 2);
+  EXPECT_EQ(wall.err,
+            "--wall:1:1: error: a length must be at most 1000000 mm (1 km)\n"
+            "1e308in\n^\n");
+}
+
+TEST(Cli, ReadsALongAxiomInLittleMemoryAndRefusesAFileOverTheLimit) {
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("lsolid_long_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  { std::ofstream(dir / "tiny.ls") << "axiom: F\n"; }
+  {
+    std::ofstream out(dir / "long.ls");
+    out << "axiom: " << std::string(10'000'000, 'F') << "\n";
+  }
+  // A 10 MB axiom took 1.1 GB (110 bytes a byte); now under 25 a byte.
+  const long tiny = testing::peak_rss_kib(
+      lsolid() + " derive tiny.ls --stats > /dev/null", dir);
+  const long peak = testing::peak_rss_kib(
+      lsolid() + " derive long.ls --stats > /dev/null", dir);
+  ASSERT_GT(tiny, 0);
+  EXPECT_LT(peak - tiny, 25L * 10'000'000L / 1024L) << peak << " " << tiny;
+  {
+    std::ofstream out(dir / "huge.ls");
+    out << "n=1\naxiom: " << std::string(17U << 20U, 'F') << "\n";
+  }
+  const auto huge = run_command(lsolid() + " huge.ls -o out.stl", dir);
+  EXPECT_EQ(huge.exit_code, 2);
+  EXPECT_EQ(huge.err,
+            "huge.ls:2:16777213: error: the file is larger than 16777216 "
+            "bytes, the limit for a .ls file\n\u2026" +
+                std::string(51, 'F') + "\n" + std::string(51, ' ') + "^\n");
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.stl"));
+  std::filesystem::remove_all(dir);
 }
 
 class Build : public ::testing::Test {
@@ -221,7 +307,8 @@ TEST_F(Build, RefusesAnUnknownBase) {
   const auto r = run_command(lsolid() + " b.ls --base wobbly", dir_);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err,
-            "--base: error: base must be auto, disc or none, not 'wobbly'\n");
+            "--base:1:1: error: base must be auto, disc or none, not "
+            "'wobbly'\nwobbly\n^\n");
   { std::ofstream(dir_ / "c.ls") << "base: tripod\n\u03C9: F\n"; }
   const auto file = run_command(lsolid() + " c.ls", dir_);
   EXPECT_EQ(file.exit_code, 2);
@@ -392,6 +479,89 @@ TEST_F(Build, LeavesNothingBehindOnBadInput) {
   EXPECT_EQ(entries, 2U);
 }
 
+TEST_F(Build, ExitsWithFourWhenTheReportCannotBeWritten) {
+  // A build and check exited 0 with the report lost.
+  { std::ofstream(dir_ / "f.ls") << "\u03C9: F\n"; }
+  ASSERT_EQ(run_command(lsolid() + " f.ls -q", dir_).exit_code, 0);
+  for (const std::string command :
+       {" f.ls", " f.ls --json", " check f.stl", " check f.stl --json",
+        " derive f.ls", " skeleton f.ls --json"}) {
+    // The subshell's own output is captured; lsolid's goes to /dev/full.
+    // (Appending piecewise avoids a GCC 12 -Wrestrict false alarm.)
+    const auto r =
+        run_command(std::string("(").append(lsolid()).append(command).append(
+                        " > /dev/full)"),
+                    dir_);
+    EXPECT_EQ(r.exit_code, 4) << command;
+    EXPECT_EQ(r.err,
+              "error: cannot write to standard output: No space left on "
+              "device\n")
+        << command;
+  }
+}
+
+TEST_F(Build, RefusesSpecialFilesAsOutputsBeforeBuilding) {
+  // Each was replaced by a regular file.
+  { std::ofstream(dir_ / "f.ls") << "\u03C9: F\n"; }
+  ASSERT_EQ(::mkfifo((dir_ / "fifo.stl").c_str(), 0644), 0);
+  ASSERT_EQ(::mkfifo((dir_ / "m.mtl").c_str(), 0644), 0);
+  ASSERT_EQ(::mkfifo((dir_ / "p.png").c_str(), 0644), 0);
+  std::filesystem::create_directory(dir_ / "folder.stl");
+  std::filesystem::create_symlink("/dev/null", dir_ / "null.stl");
+  const int sock = ::socket(AF_UNIX, SOCK_STREAM, 0);
+  sockaddr_un address{};
+  address.sun_family = AF_UNIX;
+  const std::string socket_path = (dir_ / "sock.stl").string();
+  ASSERT_LT(socket_path.size(), sizeof(address.sun_path));
+  std::copy(socket_path.begin(), socket_path.end(), address.sun_path);
+  ASSERT_EQ(::bind(sock, reinterpret_cast<const sockaddr*>(&address),
+                   sizeof(address)),
+            0);
+  for (const auto& [args, message] :
+       std::vector<std::pair<std::string, std::string>>{
+           {"-o fifo.stl",
+            "--output: error: 'fifo.stl' is a FIFO (named pipe); "
+            "lsolid writes only regular files\n"},
+           {"-o folder.stl",
+            "--output: error: 'folder.stl' is a directory; "
+            "lsolid writes only regular files\n"},
+           {"-o null.stl",
+            "--output: error: 'null.stl' is a link to a device; "
+            "lsolid writes only regular files\n"},
+           {"-o sock.stl",
+            "--output: error: 'sock.stl' is a socket; lsolid "
+            "writes only regular files\n"},
+           {"-o m.obj",
+            "--output: error: 'm.mtl' is a FIFO (named pipe); "
+            "lsolid writes only regular files\n"},
+           {"--preview p.png",
+            "--preview: error: 'p.png' is a FIFO (named "
+            "pipe); lsolid writes only regular files\n"}}) {
+    const auto r = run_command(lsolid() + " f.ls " + args, dir_);
+    EXPECT_EQ(r.exit_code, 2) << args;
+    EXPECT_EQ(r.err, message) << args;
+    EXPECT_EQ(r.out, "") << args;  // refused before building
+  }
+  ::close(sock);
+  EXPECT_TRUE(std::filesystem::is_fifo(dir_ / "fifo.stl"));
+  EXPECT_TRUE(std::filesystem::is_fifo(dir_ / "m.mtl"));
+  EXPECT_TRUE(std::filesystem::is_directory(dir_ / "folder.stl"));
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
+  EXPECT_TRUE(std::filesystem::is_socket(dir_ / "sock.stl"));
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "f.stl"));
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "m.obj"));
+}
+
+TEST_F(Build, WritesThroughASymbolicLinkToItsRegularFile) {
+  { std::ofstream(dir_ / "f.ls") << "\u03C9: F\n"; }
+  { std::ofstream(dir_ / "real.stl") << "old"; }
+  std::filesystem::create_symlink("real.stl", dir_ / "link.stl");
+  const auto r = run_command(lsolid() + " f.ls -q -o link.stl", dir_);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::is_symlink(dir_ / "link.stl"));
+  EXPECT_EQ(run_command(lsolid() + " check real.stl", dir_).exit_code, 0);
+}
+
 // A stem (colour 0) with a branch of colour 1 and one of colour 2.
 constexpr const char* kThreeColours =
     "n=0, \u03B4=45\u00B0\nwidth: 0.2\n\u03C9: FF[+'F][-''F]F\n";
@@ -554,11 +724,20 @@ TEST_F(Build, RefusesUnknownFormatsAndEmptyModels) {
             "--output: error: unknown output format '.ply': use .stl, .off, "
             ".scad, .3mf or .obj\n");
   { std::ofstream(dir_ / "empty.ls") << "\u03C9: A+B\n"; }
+  // Drawing nothing is bad input, placed at the axiom.
   const auto empty = run_command(lsolid() + " empty.ls", dir_);
-  EXPECT_EQ(empty.exit_code, 3);
+  EXPECT_EQ(empty.exit_code, 2);
   EXPECT_EQ(empty.err,
-            "error: nothing to build: the L-system draws no segment and no "
-            "polygon\n");
+            "empty.ls:1:4: error: nothing to build: the L-system draws no "
+            "segment and no polygon; modules without a turtle meaning draw "
+            "nothing (map them with an alias block, e.g. 'aliases: Fl=F "
+            "Fr=F')\n\u03C9: A+B\n   ^\n");
+  // A skeleton in millimetres cannot be scaled either; in model units it
+  // is shown empty, with a warning.
+  const auto mm = run_command(lsolid() + " skeleton empty.ls --wall 1mm", dir_);
+  EXPECT_EQ(mm.exit_code, 2);
+  EXPECT_EQ(mm.err, empty.err);
+  EXPECT_EQ(run_command(lsolid() + " skeleton empty.ls", dir_).exit_code, 0);
 }
 
 TEST_F(Build, ReadsPrintSettingsFromTheFile) {
@@ -619,39 +798,94 @@ TEST(Check, ExitsOneForAnUnprintableMeshAndTwoForAnUnreadableOne) {
   EXPECT_NE(missing.err.find("cannot read"), std::string::npos);
 }
 
-// Every file in tests/data/diagnostics has the exact stderr beside it.
-class Diagnostics : public ::testing::TestWithParam<std::string> {};
+// The catalogue of bad inputs, tests/data/diagnostics/cases.txt: a file, the
+// exit code lsolid gives it, and the options after it.
+struct BadInput {
+  std::string file;
+  int exit_code = 0;
+  std::string options;
+};
 
-TEST_P(Diagnostics, PrintsFileLineColumnMessageAndCaret) {
-  const std::string name = GetParam();
-  const auto r =
-      run_command(lsolid() + " skeleton " + name + ".ls", kDiagnostics);
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.out, "");
-  EXPECT_EQ(r.err, read_text(kDiagnostics / (name + ".stderr")));
+// For test names and failure messages: the case as cases.txt has it.
+void PrintTo(const BadInput& c, std::ostream* out) {
+  *out << c.file << ' ' << c.exit_code << (c.options.empty() ? "" : " ")
+       << c.options;
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Golden, Diagnostics,
-    ::testing::Values("bad-number", "division-by-zero", "duplicate-definition",
-                      "missing-arrow", "too-many-segments",
-                      "unbalanced-bracket", "undefined-name", "unknown-setting",
-                      "unterminated-comment", "wrong-parameter-count",
-                      "wrong-turtle-parameters"),
-    [](const auto& test) {
-      std::string name = test.param;
-      for (char& c : name) {
-        if (c == '-') c = '_';
-      }
-      return name;
-    });
-
-TEST(Diagnostics, EveryGoldenFileIsTested) {
-  std::size_t count = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(kDiagnostics)) {
-    if (entry.path().extension() == ".ls") ++count;
+std::vector<BadInput> bad_inputs() {
+  std::vector<BadInput> out;
+  std::ifstream in(kDiagnostics / "cases.txt");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line.front() == '#') continue;
+    std::istringstream words(line);
+    BadInput c;
+    words >> c.file >> c.exit_code;
+    std::getline(words >> std::ws, c.options);
+    out.push_back(c);
   }
-  EXPECT_EQ(count, 11U);
+  return out;
+}
+
+class Catalogue : public ::testing::TestWithParam<BadInput> {};
+
+// Each bad input gives exactly its golden standard error and exit code,
+// prints nothing on standard output, and leaves an existing output file
+// as it was, with nothing else beside it.
+TEST_P(Catalogue, GivesItsGoldenErrorAndLeavesTheOutputUntouched) {
+  const BadInput& c = GetParam();
+  const std::filesystem::path stem = std::filesystem::path(c.file).stem();
+  const auto dir =
+      std::filesystem::temp_directory_path() /
+      ("lsolid_catalogue_" + std::to_string(::getpid()) + "_" + stem.string());
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  std::filesystem::copy_file(kDiagnostics / c.file, dir / c.file);
+  const std::string kept = "keep me: " + stem.string() + "\n";
+  { std::ofstream(dir / "out.stl", std::ios::binary) << kept; }
+  const bool is_ls = std::filesystem::path(c.file).extension() == ".ls";
+  const std::string command =
+      is_ls ? lsolid() + " " + c.file + " " + c.options + " -o out.stl"
+            : lsolid() + " check " + c.file + " " + c.options;
+  const auto r = run_command(command, dir);
+  EXPECT_EQ(r.exit_code, c.exit_code) << command;
+  EXPECT_EQ(r.err, read_text(kDiagnostics / (stem.string() + ".stderr")))
+      << command;
+  EXPECT_EQ(r.out, "") << command;
+  EXPECT_EQ(read_text(dir / "out.stl"), kept) << command;
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& e :
+       std::filesystem::directory_iterator(dir)) {
+    ++entries;
+  }
+  EXPECT_EQ(entries, 2U) << command;  // the input and out.stl, no temporary
+  std::filesystem::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(Golden, Catalogue, ::testing::ValuesIn(bad_inputs()),
+                         [](const auto& test) {
+                           std::string name = test.param.file;
+                           for (char& c : name) {
+                             if (c == '-' || c == '.') c = '_';
+                           }
+                           return name;
+                         });
+
+TEST(CatalogueFolder, ListsEveryInputOnceWithItsGoldenError) {
+  std::set<std::string> listed;
+  for (const BadInput& c : bad_inputs()) {
+    EXPECT_TRUE(listed.insert(c.file).second) << c.file << " twice";
+    EXPECT_TRUE(std::filesystem::exists(
+        kDiagnostics /
+        (std::filesystem::path(c.file).stem().string() + ".stderr")))
+        << c.file;
+  }
+  EXPECT_GE(listed.size(), 60U);
+  for (const auto& entry : std::filesystem::directory_iterator(kDiagnostics)) {
+    const std::string name = entry.path().filename().string();
+    if (name == "cases.txt" || entry.path().extension() == ".stderr") continue;
+    EXPECT_EQ(listed.count(name), 1U) << name << " is not in cases.txt";
+  }
 }
 
 }  // namespace

@@ -389,6 +389,59 @@ TEST(Derivation, CountsAsItGoesWhenSizesAreUnpredictable) {
   }
 }
 
+// The message of the error that deriving `.ls` text with these options
+// raises, or "no error".
+std::string derive_error(const std::string& text, DerivationOptions options) {
+  try {
+    (void)derive(parse(text), options);
+  } catch (const ParseError& e) {
+    return e.diagnostic().message;
+  }
+  return "no error";
+}
+
+TEST(Derivation, HoldsTheModuleLimitWhenRewritingTheWholeString) {
+  // Contexts make the whole string be rewritten; sizes depend on values.
+  const std::string text =
+      "\u03C9: A(1)\nn=40\nA(x) : x > 0 \u2192 A(x)A(x)\nF < F \u2192 F\n";
+  EXPECT_EQ(derive_error(text, {.max_modules = 1000}),
+            "n = 40 derives more than the limit of 1000 modules "
+            "(--max-modules)");
+}
+
+TEST(Derivation, HoldsTheMemoryLimitWhenRewritingTheWholeString) {
+  // It ran to 2.6 GB and out of memory: now it stops at the limit, counted
+  // as the strings grow, before they grow past it.
+  const std::string text =
+      "\u03C9: A(1)\nn=40\nA(x) : x > 0 \u2192 A(x)A(x)\nF < F \u2192 F\n";
+  const std::string message =
+      derive_error(text, {.max_memory_bytes = std::uint64_t{16} << 20U});
+  EXPECT_TRUE(message.starts_with(
+      "n = 40 needs more than the limit of 16 MiB (--max-memory) in step "))
+      << message;
+  EXPECT_TRUE(message.ends_with(
+      " modules; with contexts or cuts, the whole string is rewritten each "
+      "step"))
+      << message;
+  // Cuts rewrite the whole string too; streaming is not limited by memory.
+  EXPECT_TRUE(derive_error("\u03C9: A(1)\nn=40\nA(x) : x > 0 \u2192 "
+                           "A(x)A(x)[%]\n",
+                           {.max_memory_bytes = std::uint64_t{16} << 20U})
+                  .starts_with("n = 40 needs more than the limit of 16 MiB"));
+  EXPECT_EQ(derive_error("\u03C9: A(1)\nn=20\nA(x) : x > 0 \u2192 A(x)A(x)\n",
+                         {.max_memory_bytes = 1}),
+            "no error");
+}
+
+TEST(Derivation, RefusesAtOnceAWholeStringThatCannotFitTheMemoryLimit) {
+  // 2^30 modules of at least 16 bytes are more than 2 GiB.
+  EXPECT_EQ(derive_error("\u03C9: A\nn=30\nA \u2192 AA\nB < C \u2192 D\n",
+                         {.max_modules = std::uint64_t{1} << 40U}),
+            "n = 30 would hold a string of at least 1073741824 modules, more "
+            "than the limit of 2048 MiB (--max-memory); with contexts or "
+            "cuts, the whole string is rewritten each step");
+}
+
 TEST(Derivation, ReportsDivisionByZeroWhereItIsWritten) {
   const Grammar g = parse("\u03C9: A(1)\nA(x) \u2192 A(x/(x-1))");
   try {

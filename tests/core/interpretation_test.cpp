@@ -8,6 +8,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <set>
+#include <string>
 #include <tuple>
 
 #include "support/abop_systems.hpp"
@@ -294,6 +295,67 @@ TEST(Interpretation, AliasesGiveModulesTurtleMeanings) {
 
 TEST(Interpretation, CutBranchesAreNotDrawn) {
   EXPECT_EQ(walk("\u03C9: F[F%FF]F\n").segments.size(), 3U);
+}
+
+// `line:column: message` of interpreting `.ls` text, or "no error".
+std::string walk_error(const std::string& text) {
+  return testing::located_error_of([&] { (void)walk(text); });
+}
+
+TEST(Interpretation, RefusesAColourIndexOutOfRangeAtItsModule) {
+  // Both were converted to int undefined (UBSan: float-cast-overflow),
+  // giving colour -2147483648.
+  EXPECT_EQ(walk_error("\u03C9: F'(1e300)F\n"),
+            "1:5: colour index 1e+300 is out of range 0 to 1048576");
+  EXPECT_EQ(walk_error("\u03C9: F;(2147483648)F\n"),
+            "1:5: colour index 2147483648 is out of range 0 to 1048576");
+  EXPECT_EQ(walk_error("\u03C9: F,(-1)F\n"),
+            "1:5: colour index -1 is out of range 0 to 1048576");
+  // A computed index is placed at the module that computes it.
+  EXPECT_EQ(walk_error("n=1\n\u03C9: A(3e9)\nA(x) \u2192 F;(x)F\n"),
+            "3:9: colour index 3e+09 is out of range 0 to 1048576");
+  EXPECT_EQ(walk_error("colour: 1048576\n\u03C9: F'F\n"),
+            "2:5: colour index 1048577 is out of range 0 to 1048576");
+}
+
+TEST(Interpretation, TruncatesAColourIndexWithinRange) {
+  const Skeleton s = walk("\u03C9: ;(2.5)F;(1048576)F\n");
+  ASSERT_EQ(s.segments.size(), 2U);
+  EXPECT_EQ(s.segments[0].color, 2);
+  EXPECT_EQ(s.segments[1].color, 1 << 20);
+}
+
+TEST(Interpretation, RefusesATurtleThatLeavesTheFiniteNumbers) {
+  EXPECT_EQ(walk_error("\u03C9: F(1e308)F(1e308)\n"),
+            "1:4: the turtle's position overflows: it is no longer a finite "
+            "number");
+  EXPECT_EQ(walk_error("width scale: 1e10\n\u03C9: !(1e300)F\n"),
+            "2:4: the turtle's width overflows: it is no longer a finite "
+            "number");
+}
+
+// The error for building `.ls` text that draws nothing.
+std::string nothing_drawn(const std::string& text) {
+  const Grammar g = parse(text);
+  const Skeleton s = interpret(g);
+  EXPECT_TRUE(s.segments.empty() && s.polygons.empty());
+  return testing::located_error_of([&] { throw nothing_drawn_error(g, s); });
+}
+
+TEST(Interpretation, PlacesWhatMakesAnEmptyDrawingWhereItCanBeKnown) {
+  EXPECT_EQ(walk("\u03C9: FF(0)F(0)\nstep: 0\n").zero_length_segments, 3U);
+  EXPECT_EQ(nothing_drawn("n=2\nstep: 0\n\u03C9: F\nF \u2192 FF\n"),
+            "2:7: nothing to build: the step is 0, so F without a length "
+            "draws a segment of length 0");
+  EXPECT_EQ(nothing_drawn("n=1\n\u03C9: A\nA \u2192 +F(0)\n"),
+            "3:6: nothing to build: every segment has length 0");
+  EXPECT_EQ(nothing_drawn("\u03C9: A+B\n"),
+            "1:4: nothing to build: the L-system draws no segment and no "
+            "polygon; modules without a turtle meaning draw nothing (map "
+            "them with an alias block, e.g. 'aliases: Fl=F Fr=F')");
+  EXPECT_EQ(nothing_drawn("\u03C9: A{f}\n"),
+            "1:5: nothing to build: every polygon has fewer than 3 distinct "
+            "points");
 }
 
 }  // namespace

@@ -55,6 +55,36 @@ TEST(Parser, ReadsLabelsAndConditions) {
   EXPECT_FALSE(g.productions[1].condition.has_value());
 }
 
+TEST(Parser, ReadsAnyLabelBeforeTheProduction) {
+  EXPECT_EQ(derived("n=1\naxiom: A(2)\nP1: A(d) : d>0 -> A(d-1)\n"), "A(1)");
+  EXPECT_EQ(derived("n=1\naxiom: A\nr: A -> FA\n"), "FA");
+  EXPECT_EQ(derived("n=1\naxiom: A\ngrow_2 : A \u2192 FA\n"), "FA");
+  // ABOP fig. 1.31 labels its context productions over 0 and 1.
+  EXPECT_EQ(derived("n=1\naxiom: 101\np1: 1 < 0 > 1 \u2192 1\n"), "111");
+  // A label and a condition over constants.
+  EXPECT_EQ(derived("#define t 2\nn=1\naxiom: A\nr: A : t > 1 \u2192 B\n"),
+            "B");
+}
+
+TEST(Parser, ReadsAWordBeforeAStarAsAPredecessorWithACondition) {
+  const Grammar g = parse("axiom: A\nA : * \u2192 B\n");
+  ASSERT_EQ(g.productions.size(), 1U);
+  EXPECT_EQ(g.alphabet.name(g.productions[0].predecessor.symbol), "A");
+  EXPECT_FALSE(g.productions[0].condition.has_value());
+}
+
+TEST(Parser, RefusesAColonThatMayEndALabelOrStartACondition) {
+  EXPECT_EQ(located_error("#define t 2\naxiom: A\nA : t > 1 \u2192 B\n"),
+            "3:1: ambiguous ':': 'A' may be a label or a predecessor with the "
+            "condition 't > 1'; write 'p1: t > 1 \u2192 \u2026' for a label, "
+            "'p1: A : t > 1 \u2192 \u2026' for a condition");
+  // A declared name may be a predecessor too; an undeclared word may not.
+  EXPECT_EQ(
+      parse_error("module leaf\naxiom: A\nleaf : 1 \u2192 B\n").substr(0, 31),
+      "ambiguous ':': 'leaf' may be a ");
+  EXPECT_EQ(derived("n=1\naxiom: 1\nleaf : 1 \u2192 B\n"), "B");
+}
+
 TEST(Parser, StripsBlockCommentsAnywhereAndLineComments) {
   const Grammar g = parse(
       "#define a 45 /* branching angle */\n"
@@ -67,6 +97,30 @@ TEST(Parser, StripsBlockCommentsAnywhereAndLineComments) {
       "F \u2192 F[+(a)F]\n");
   EXPECT_EQ(g.constants.at("a"), 45.0);
   EXPECT_EQ(to_string(derive(g), g.alphabet), "F[+(45)F]");
+}
+
+TEST(Parser, EndsALineAtAHashStandingAloneAsAWord) {
+  EXPECT_EQ(derived("n=1\naxiom: F   # comment\nF -> FF\n"), "FF");
+  EXPECT_EQ(derived("n=2 # steps\naxiom: F\t#\tcomment\nF -> F[+F] #\n"),
+            "F[+F][+F[+F]]");
+  // Touching a module, `#` is a module (cpfg's widen).
+  EXPECT_EQ(derived("n=1\naxiom: A\nA -> F#F #F # widen\n"), "F#F#F");
+  EXPECT_EQ(parse("#define a 45  # degrees\n\u03C9: F\n").constants.at("a"),
+            45.0);
+}
+
+TEST(Parser, RefusesASettingNameWithoutItsColon) {
+  EXPECT_EQ(located_error("n=1\naxiom X\nX -> FX\n"),
+            "2:6: missing ':' after 'axiom': write 'axiom: X'");
+  EXPECT_EQ(located_error("n 5\nF\n"),
+            "1:2: missing ':' after 'n': write 'n: 5'");
+  // Fractint writes the number of turns in a circle.
+  EXPECT_EQ(located_error("Angle 6\nAxiom F\n"),
+            "1:6: missing ':' after 'Angle': write 'Angle: 6' for 6 degrees, "
+            "or 'angle factor: 6' for Fractint's 360/6 degrees");
+  // Modules that happen to spell a setting are still modules.
+  EXPECT_EQ(derived("n F\n", 0), "nF");
+  EXPECT_EQ(derived("module seed\nseed F\n", 0), "seed F");
 }
 
 TEST(Parser, NeverReadsDoubleSlashInsideAProductionAsAComment) {
@@ -219,6 +273,25 @@ TEST(Parser, AcceptsDegreeSignsFromPdfs) {
   }
 }
 
+TEST(Parser, ReadsAOneLetterNameBeforeEqualsAndModulesAsAProduction) {
+  // Fractint's `N=O` beside the setting n=2, either way round.
+  EXPECT_EQ(derived("n=2\nN=O\naxiom: N\n"), "O");
+  EXPECT_EQ(derived("axiom: N\nN=OF\nn=2\n"), "OF");
+  EXPECT_EQ(derived("n=2\naxiom: D\nD=1\n"), "1");
+  // Before a number or arithmetic over constants, it is a setting.
+  EXPECT_EQ(
+      parse("#define k 3\nN = k*2 // steps\nF\n").settings.derivation_length,
+      6);
+}
+
+TEST(Parser, RefusesAOneLetterSettingOfALetterThatIsAModule) {
+  EXPECT_EQ(located_error("N=2\naxiom: NF\n"),
+            "1:1: ambiguous 'N=2': it may set 'N' or rewrite the module 'N' "
+            "that this file uses; write 'N: 2' for the setting, 'N \u2192 2' "
+            "for a production");
+  EXPECT_EQ(parse("n: 2\naxiom: nF\n").settings.derivation_length, 2);
+}
+
 TEST(Parser, AllowsTrailingCommentsOnNumericSettings) {
   const Grammar g = parse("n=2 // two steps\n\u03C9: F//F\n");
   EXPECT_EQ(g.settings.derivation_length, 2);
@@ -234,12 +307,43 @@ TEST(Parser, DeclaresParameterCountsInModuleLines) {
             "1), here 1");
 }
 
-TEST(Parser, ReadsAStarInAContextAsAnyModule) {
-  // ABOP fig. 1.31: p9 `* < + > * → -`.
-  EXPECT_EQ(derived("ignore: F\n\u03C9: 1F+F1-1\n* < + > * \u2192 -\n"
+TEST(Parser, ParsesAHundredThousandProductionsInLinearWork) {
+  // They did not finish in 120 s when each line searched the rest of the
+  // file and each name was matched against every other (bench/core_bench
+  // times it).
+  std::string text = "\u03C9: A0\n";
+  for (int i = 0; i < 100'000; ++i) {
+    // (Appending piecewise avoids a GCC 12 -Wrestrict false alarm.)
+    text.append("A").append(std::to_string(i)).append(" \u2192 F A");
+    text.append(std::to_string(i + 1)).append("\n");
+  }
+  const Grammar g = parse(text);
+  ASSERT_EQ(g.productions.size(), 100'000U);
+  EXPECT_EQ(g.alphabet.name(g.productions.back().predecessor.symbol), "A99999");
+  EXPECT_LE(g.alphabet.bytes_examined(), 2 * text.size());
+  EXPECT_EQ(derived(text, 3), "FFF A3");
+}
+
+TEST(Parser, ReadsALoneStarContextAsNoContextAsCpfgDoes) {
+  // cpfg: `*` as the whole context is no context, so A grows every step.
+  EXPECT_EQ(derived("n=3\naxiom: A\n* < A > * -> AF\n"), "AFFF");
+  EXPECT_EQ(derived("\u03C9: +1\n* < + \u2192 -\nn=1"), "-1");
+  EXPECT_FALSE(parse("\u03C9: A\n* < A > * -> AF\n")
+                   .productions[0]
+                   .is_context_sensitive());
+  // ABOP fig. 1.31's p9 `* < + > * → -` then turns every `+`.
+  EXPECT_EQ(derived("ignore: F\n\u03C9: +1F+F1-1\n* < + > * \u2192 -\n"
                     "* < - > * \u2192 +\nn=1"),
-            "1F-F1+1");
-  EXPECT_EQ(derived("\u03C9: +1\n* < + \u2192 -\nn=1"), "+1");
+            "-1F-F1+1");
+}
+
+TEST(Parser, ReadsAStarAmongContextModulesAsAnyOneModule) {
+  // The wildcard needs a module there: none before the first A.
+  EXPECT_EQ(derived("\u03C9: AAB\n* A < B \u2192 C\nn=1"), "AAC");
+  EXPECT_EQ(derived("\u03C9: AB\n* A < B \u2192 C\nn=1"), "AB");
+  // It matches no bracket: in A[B]C, A's right context skips the branch.
+  EXPECT_EQ(derived("\u03C9: A[B]C\nA > * C \u2192 X\nn=1"), "A[B]C");
+  EXPECT_EQ(derived("\u03C9: ABC\nA > * C \u2192 X\nn=1"), "XBC");
 }
 
 TEST(Parser, ReportsEachMistakeWithItsOwnMessage) {

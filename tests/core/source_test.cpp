@@ -3,8 +3,14 @@
 #include "lsys/source.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
 
 #include "lsys/diagnostic.hpp"
+#include "support/core_helpers.hpp"
 
 namespace lsys {
 namespace {
@@ -35,6 +41,95 @@ TEST(SourceFile, ReportsAMissingFileWithItsName) {
     EXPECT_EQ(e.diagnostic().line, 0);
     EXPECT_EQ(e.diagnostic().message,
               "cannot read file: No such file or directory");
+  }
+}
+
+// `line:column: message` of check_text's error, or "no error".
+std::string text_error(const std::string& text) {
+  return testing::located_error_of(
+      [&] { check_text(SourceFile("t.ls", text)); });
+}
+
+TEST(SourceFile, AcceptsUtf8TextWithOrWithoutAByteOrderMark) {
+  EXPECT_EQ(text_error("n=2, \u03B4=90\u00B0\r\n\tF \u2192 F\U0001F33F\rX"),
+            "no error");
+  EXPECT_EQ(text_error("\xEF\xBB\xBF\u03C9: F\n"), "no error");
+}
+
+TEST(SourceFile, RefusesInvalidUtf8AtTheByteNamingIt) {
+  EXPECT_EQ(text_error("axiom: F\xFF[F\n"),
+            "1:9: invalid UTF-8 byte 0xFF: save the file as UTF-8");
+  // Latin-1's degree sign, a truncated sequence, an overlong '/', a
+  // surrogate and a code point above U+10FFFF.
+  EXPECT_EQ(text_error("n=1\nangle: 90\xB0\n"),
+            "2:10: invalid UTF-8 byte 0xB0: save the file as UTF-8");
+  EXPECT_EQ(text_error("F\xC3"),
+            "1:2: invalid UTF-8 byte 0xC3: save the file as UTF-8");
+  EXPECT_EQ(text_error("F\xC0\xAF"),
+            "1:2: invalid UTF-8 byte 0xC0: save the file as UTF-8");
+  EXPECT_EQ(text_error("\xED\xA0\x80"),
+            "1:1: invalid UTF-8 byte 0xED: save the file as UTF-8");
+  EXPECT_EQ(text_error("\xF4\x90\x80\x80"),
+            "1:1: invalid UTF-8 byte 0xF4: save the file as UTF-8");
+}
+
+TEST(SourceFile, RefusesControlCharactersButTabAndLineBreaks) {
+  EXPECT_EQ(text_error(std::string("axiom: F\0F]\n", 13)),
+            "1:9: control character U+0000 in the text");
+  EXPECT_EQ(text_error("F -> F]\x1B]0;x\x07\n"),
+            "1:8: control character U+001B in the text");
+  EXPECT_EQ(text_error("F\x7F"), "1:2: control character U+007F in the text");
+  EXPECT_EQ(text_error("F\xC2\x9B"),
+            "1:2: control character U+009B in the text");
+}
+
+TEST(SourceFile, NamesUtf16AndUtf32AndShowsTheirFirstLine) {
+  const std::string le16(
+      "\xFF\xFEn\0=\0"
+      "2\0\n\0F\0",
+      12);
+  try {
+    check_text(SourceFile("w.ls", le16));
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(format_diagnostic(e.diagnostic()),
+              "w.ls:1:1: error: the file is UTF-16 (little-endian); save it "
+              "as UTF-8\nn=2\n^\n");
+  }
+  EXPECT_EQ(text_error(std::string("\0a\0x\0i", 6)),
+            "1:1: the file is UTF-16 (big-endian); save it as UTF-8");
+  EXPECT_EQ(text_error(std::string("F\0\0\0\n\0\0\0", 8)),
+            "1:1: the file is UTF-32 (little-endian); save it as UTF-8");
+  EXPECT_EQ(text_error(std::string("\0\0\xFE\xFF\0\0\0F", 8)),
+            "1:1: the file is UTF-32 (big-endian); save it as UTF-8");
+}
+
+TEST(SourceFile, RefusesAFileLongerThanTheLimitWhereTheLimitFalls) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("lsolid_long_" + std::to_string(::getpid()) + ".ls");
+  { std::ofstream(path) << "n=1\naxiom: " << std::string(200, 'F') << "\n"; }
+  try {
+    (void)load_source(path, 100);
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.diagnostic().line, 2);
+    EXPECT_EQ(e.diagnostic().column, 97);
+    EXPECT_EQ(e.diagnostic().message,
+              "the file is larger than 100 bytes, the limit for a .ls file");
+  }
+  EXPECT_EQ(load_source(path, 300)->text().size(), 212U);
+  std::filesystem::remove(path);
+  EXPECT_EQ(kMaxSourceBytes, 16U * 1024U * 1024U);
+}
+
+TEST(SourceFile, StopsReadingADeviceThatNeverEnds) {
+  try {
+    (void)load_source("/dev/zero", 1000);
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.diagnostic().column, 1001);
+    EXPECT_EQ(e.diagnostic().message,
+              "the file is larger than 1000 bytes, the limit for a .ls file");
   }
 }
 

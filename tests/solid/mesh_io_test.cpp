@@ -8,9 +8,12 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
 
 #include "lsolid/errors.hpp"
+#include "lsys/diagnostic.hpp"
 #include "support/mesh_checks.hpp"
+#include "support/test_dir.hpp"
 
 namespace lsolid {
 namespace {
@@ -20,12 +23,7 @@ using testing::box_mesh;
 
 class MeshIo : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("lsolid_io_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = testing::make_test_dir("lsolid_io_"); }
   void TearDown() override { fs::remove_all(dir_); }
   fs::path dir_;
 };
@@ -101,10 +99,98 @@ TEST_F(MeshIo, RejectsTruncatedAndForeignFiles) {
   write_mesh(box_mesh({0, 0, 0}, {1, 1, 1}), dir_ / "b.stl",
              MeshFormat::StlBinary);
   fs::resize_file(dir_ / "b.stl", 100);
-  EXPECT_THROW((void)read_mesh(dir_ / "b.stl"), IoError);
+  // Malformed content is bad input; a file that cannot be read, I/O.
+  EXPECT_THROW((void)read_mesh(dir_ / "b.stl"), lsys::ParseError);
   { std::ofstream(dir_ / "x.stl") << "hello"; }
-  EXPECT_THROW((void)read_mesh(dir_ / "x.stl"), IoError);
+  EXPECT_THROW((void)read_mesh(dir_ / "x.stl"), lsys::ParseError);
   EXPECT_THROW((void)read_mesh(dir_ / "absent.stl"), IoError);
+}
+
+// What read_mesh says of a file of this text: the formatted diagnostic of
+// malformed content, the message of an I/O error, or "no error".
+std::string read_error(const fs::path& path, const std::string& text) {
+  { std::ofstream(path, std::ios::binary) << text; }
+  try {
+    (void)read_mesh(path);
+  } catch (const lsys::ParseError& e) {
+    return lsys::format_diagnostic(e.diagnostic());
+  } catch (const IoError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST_F(MeshIo, ReadsAsciiStlByItsGrammarAndPlacesAMistake) {
+  const fs::path stl = dir_ / "a.stl";
+  const std::string name = stl.string();
+  const std::string facet =
+      "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 0 0\n"
+      "  vertex 0 1 0\n endloop\nendfacet\n";
+  // Nonsense after `solid` was read as a mesh of no triangles.
+  EXPECT_EQ(read_error(stl, "solid x\nnonsense here\n"),
+            name +
+                ":2:1: error: expected 'facet' or 'endsolid', not "
+                "'nonsense'\nnonsense here\n^\n");
+  EXPECT_EQ(read_error(stl, "solid x\n" + facet),
+            name +
+                ": error: the file ends where 'facet' or 'endsolid' "
+                "should follow\n");
+  EXPECT_EQ(read_error(stl,
+                       "solid x\nfacet normal 0 0 1\nouter loop\nvertex "
+                       "0 nan 0\n"),
+            name +
+                ":4:10: error: expected a finite number, not 'nan'\n"
+                "vertex 0 nan 0\n         ^\n");
+  EXPECT_EQ(read_error(stl,
+                       "solid x\nfacet normal 0 0 1\nouter loop\nvertex "
+                       "0 0 0\nvertex 1 0 0\nendloop\n"),
+            name +
+                ":6:1: error: expected 'vertex', not 'endloop'\n"
+                "endloop\n^\n");
+  // Several solids, and normals some exporters write as nan, are fine.
+  EXPECT_EQ(read_error(stl, "solid a\n" + facet + "endsolid a\nsolid b\n" +
+                                facet + "endsolid\n"),
+            "no error");
+  EXPECT_EQ(read_mesh(stl).triangles.size(), 2U);
+}
+
+TEST_F(MeshIo, RefusesOffCountsTheFileCannotHold) {
+  const fs::path off = dir_ / "x.off";
+  const std::string name = off.string();
+  // These allocated 10^11 vertices (bad_alloc) or wrapped -1 to 2^64-1.
+  EXPECT_EQ(read_error(off, "OFF\n99999999999 1 0\n"),
+            name +
+                ":2:1: error: 99999999999 vertices do not fit in a file of "
+                "20 bytes\n99999999999 1 0\n^\n");
+  EXPECT_EQ(read_error(off, "OFF\n-1 1 0\n"),
+            name +
+                ":2:1: error: expected the number of vertices, not '-1'\n-1 1 "
+                "0\n^\n");
+  EXPECT_EQ(read_error(off, "COFF\n3 1 0\n"),
+            name + ":1:1: error: expected 'OFF', not 'COFF'\nCOFF\n^\n");
+  EXPECT_EQ(read_error(off, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"),
+            name +
+                ":6:7: error: no vertex 7: the file has 3\n3 0 1 7\n      "
+                "^\n");
+}
+
+TEST_F(MeshIo, RefusesADamagedBinaryStlAndFilesThatAreNotRegular) {
+  const fs::path stl = dir_ / "b.stl";
+  std::string binary(84, '\0');
+  binary.replace(0, 5, "solid");  // as many exporters write the header
+  binary[80] = 2;
+  binary += std::string(50, '\0');
+  EXPECT_EQ(read_error(stl, binary),
+            stl.string() +
+                ": error: a damaged binary STL: its header counts 2 triangles "
+                "(184 bytes), the file has 134 bytes\n");
+  // A device would never end.
+  try {
+    (void)read_mesh("/dev/zero");
+    ADD_FAILURE() << "no error";
+  } catch (const IoError& e) {
+    EXPECT_STREQ(e.what(), "/dev/zero: cannot read: not a regular file");
+  }
 }
 
 std::string read_all(const fs::path& path) {
@@ -173,11 +259,11 @@ TEST_F(MeshIo, RefusesABrokenObjWithItsLine) {
   try {
     (void)read_mesh(dir_ / "bad.obj");
     FAIL() << "no error";
-  } catch (const IoError& e) {
-    EXPECT_NE(
-        std::string(e.what()).find("line 3: a face names a missing vertex"),
-        std::string::npos)
-        << e.what();
+  } catch (const lsys::ParseError& e) {
+    EXPECT_EQ(e.diagnostic().line, 3);
+    EXPECT_EQ(e.diagnostic().column, 1);
+    EXPECT_EQ(e.diagnostic().message, "a face names a missing vertex");
+    EXPECT_EQ(e.diagnostic().source_line, "f 1 2 3");
   }
 }
 

@@ -360,8 +360,35 @@ TEST(Solid, WarnsWhenWidthsDwarfLengths) {
       << s.report.warnings[0];
 }
 
-TEST(Solid, RefusesAModelThatDrawsNothing) {
-  EXPECT_THROW((void)build_solid(parse("\u03C9: A+B")), GeometryError);
+TEST(Solid, RefusesAModelThatDrawsNothingAsBadInputAtItsPlace) {
+  // It was a GeometryError (exit 3); F(0) draws nothing either.
+  try {
+    (void)build_solid(parse("n=1\n\u03C9: A\nA \u2192 F(0)+F(0)\n"));
+    FAIL() << "no error";
+  } catch (const lsys::ParseError& e) {
+    EXPECT_EQ(e.diagnostic().line, 3);
+    EXPECT_EQ(e.diagnostic().column, 5);
+    EXPECT_EQ(e.diagnostic().message,
+              "nothing to build: every segment has length 0");
+  }
+  EXPECT_THROW((void)build_solid(parse("\u03C9: A+B")), lsys::ParseError);
+}
+
+TEST(Solid, RefusesAModelReachingBeyondAKilometre) {
+  // F(1e300) at 1 mm a unit failed as geometry (exit 3), through integer
+  // grid keys that could not hold its coordinates.
+  SolidOptions options;
+  options.print.scale_mm_per_unit = 1.0;
+  options.print.size_mm.reset();
+  try {
+    (void)build_solid(parse("\u03C9: F(1e300)\n"), options);
+    FAIL() << "no error";
+  } catch (const lsys::ParseError& e) {
+    EXPECT_EQ(e.diagnostic().column, 4);
+    EXPECT_EQ(e.diagnostic().message,
+              "at 1 mm per unit the model reaches 1e+300 mm from its origin, "
+              "more than the 1 km (1000000 mm) lsolid builds");
+  }
 }
 
 TEST(Solid, WritesOverlappingPartsWhenAskedNotToUnite) {

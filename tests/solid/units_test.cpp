@@ -4,10 +4,22 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "lsys/diagnostic.hpp"
 
 namespace lsolid {
 namespace {
+
+// The message parse_length_mm refuses `text` with, or "no error".
+std::string length_error(const char* text) {
+  try {
+    (void)parse_length_mm(text, "--wall");
+  } catch (const lsys::ParseError& e) {
+    return e.diagnostic().message;
+  }
+  return "no error";
+}
 
 TEST(Units, ReadsMillimetresCentimetresAndInches) {
   EXPECT_EQ(parse_length_mm("0.8mm", "--wall"), 0.8);
@@ -29,14 +41,17 @@ TEST(Units, RejectsBadLengthsWithTheirColumn) {
   EXPECT_THROW((void)parse_length_mm("-1mm", "--wall"), lsys::ParseError);
   EXPECT_THROW((void)parse_length_mm("0", "--wall"), lsys::ParseError);
   for (const char* bad : {"inf", "nan", "infmm"}) {
-    try {
-      (void)parse_length_mm(bad, "--wall");
-      ADD_FAILURE() << bad;
-    } catch (const lsys::ParseError& e) {
-      EXPECT_EQ(e.diagnostic().message,
-                "a length must be a positive, finite number")
-          << bad;
-    }
+    EXPECT_EQ(length_error(bad), "a length must be a positive, finite number")
+        << bad;
+  }
+}
+
+TEST(Units, RefusesALengthAboveAKilometre) {
+  EXPECT_EQ(parse_length_mm("100000cm", "--size"), 1e6);
+  // 1e308 inches is not even a finite number of millimetres.
+  for (const char* bad : {"1000001", "1e308in", "1e300mm"}) {
+    EXPECT_EQ(length_error(bad), "a length must be at most 1000000 mm (1 km)")
+        << bad;
   }
 }
 

@@ -46,16 +46,22 @@ inline std::string parse_error(std::string_view text) {
   return "no error";
 }
 
-/// The full diagnostic `line:column: message` that parsing raises.
-inline std::string located_error(std::string_view text) {
+/// `line:column: message` of what `work` raises, or "no error".
+template <typename Work>
+std::string located_error_of(const Work& work) {
   try {
-    (void)parse(text);
+    work();
   } catch (const ParseError& e) {
     const Diagnostic& d = e.diagnostic();
     return std::to_string(d.line) + ":" + std::to_string(d.column) + ": " +
            d.message;
   }
   return "no error";
+}
+
+/// The full diagnostic `line:column: message` that parsing raises.
+inline std::string located_error(std::string_view text) {
+  return located_error_of([&] { (void)parse(text); });
 }
 
 }  // namespace lsys::testing

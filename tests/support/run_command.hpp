@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -46,6 +47,24 @@ inline CommandResult run_command(const std::string& command_line,
   std::filesystem::remove(out);
   std::filesystem::remove(err);
   return result;
+}
+
+/// Runs a shell command line in `directory` as run_command does, and gives
+/// the peak resident set of the program it runs (the shell execs it), in
+/// KiB.
+inline long peak_rss_kib(const std::string& command_line,
+                         const std::filesystem::path& directory = ".") {
+  const std::string full =
+      "cd '" + directory.string() + "' && exec " + command_line;
+  const pid_t child = ::fork();
+  if (child == 0) {
+    ::execl("/bin/sh", "sh", "-c", full.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  int status = 0;
+  rusage usage{};
+  if (child < 0 || ::wait4(child, &status, 0, &usage) != child) return -1;
+  return usage.ru_maxrss;
 }
 
 /// The lsolid binary under test, quoted for a shell.

@@ -44,16 +44,31 @@ class Alphabet {
   [[nodiscard]] bool is_multi_character(SymbolId id) const {
     return multi_[id];
   }
+  /// The bytes match_length and extends_to_longer_name have examined so
+  /// far: each looks at a byte at most once, whatever the number of names,
+  /// so tokenising a text costs at most its length.
+  [[nodiscard]] std::uint64_t bytes_examined() const noexcept {
+    return bytes_examined_;
+  }
 
  private:
+  // The trie node reached from `node` by `byte`, if any.
+  [[nodiscard]] std::optional<std::uint32_t> child(std::uint32_t node,
+                                                   char byte) const;
+
   std::vector<std::string> names_;
   std::vector<bool> multi_;
   std::unordered_map<std::string, SymbolId> ids_;
-  std::vector<std::string> long_names_;  // longest first
+  // A trie of the multi-character names over their bytes: node 0 is the
+  // root, an edge is keyed by node × 256 + byte.
+  std::unordered_map<std::uint64_t, std::uint32_t> edges_;
+  std::vector<bool> ends_name_{false};
+  mutable std::uint64_t bytes_examined_ = 0;
 };
 
-/// The byte length of the UTF-8 code point starting `text` (1 for invalid
-/// bytes, so that scanning always advances).
+/// The byte length of the UTF-8 code point starting `text`: 1 for a byte
+/// that does not start a complete sequence, so that scanning always
+/// advances and an invalid byte never swallows the characters after it.
 /// @pre `!text.empty()`.
 [[nodiscard]] std::size_t code_point_length(std::string_view text) noexcept;
 

@@ -21,9 +21,12 @@ struct DerivationOptions {
   /// Refuse when the turtle would draw more segments than this.
   std::uint64_t max_segments = 20'000'000;
   /// Refuse when the derived string would be longer than this, or the
-  /// turtle would read more modules after the homomorphism. A string that
-  /// must be held whole (contexts, cuts) takes about 40 bytes a module.
+  /// turtle would read more modules after the homomorphism.
   std::uint64_t max_modules = 200'000'000;
+  /// Refuse when a string that must be held whole (contexts, cuts) would
+  /// take more memory than this: about 16 bytes a module and 8 a parameter
+  /// for each of two steps, and 8 a module for bracket matching.
+  std::uint64_t max_memory_bytes = std::uint64_t{2} << 30U;
 };
 
 /// The size of the n-th string, predicted from the count matrix of the

@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -23,8 +24,9 @@ namespace lsys {
 inline constexpr SymbolId kBranchOpen = 0;   ///< `[`
 inline constexpr SymbolId kBranchClose = 1;  ///< `]`
 inline constexpr SymbolId kCut = 2;          ///< `%`
-/// `*`: in a context, any one module other than a bracket (ABOP fig. 1.31:
-/// `* < + > * → -`).
+/// `*`: in a context of several modules, any one module other than a
+/// bracket (`* A < B`). A context that is only `*` is no context, as in
+/// cpfg (`* < A > * → AF`), and never reaches the deriver.
 inline constexpr SymbolId kAnyModule = 3;
 
 /// A module of a predecessor or context: a name and the number of formal
@@ -35,29 +37,27 @@ struct PatternModule {
   std::size_t offset = 0;  ///< byte offset in the source
 };
 
-/// A module of a successor or the axiom, with parameter expressions.
-struct ModuleTemplate {
-  SymbolId symbol = 0;
-  std::vector<Expression> parameters;
-  std::size_t offset = 0;
-};
-
-/// The right-hand side of a production (or the axiom), also kept flat for
-/// the deriver: the expressions of all modules in one array and, when none
-/// depends on a parameter, their values.
+/// The right-hand side of a production (or the axiom), kept flat: a name,
+/// a source place and a range of parameter expressions per module, and,
+/// when no expression depends on a parameter, their values. About 12 bytes
+/// a module besides the expressions, so that a long axiom stays small.
 class Successor {
  public:
-  Successor() = default;
-  /// @pre brackets in `modules` are balanced.
-  explicit Successor(std::vector<ModuleTemplate> modules);
+  /// Appends a module. Brackets must balance when the successor is used.
+  /// @pre `offset` fits 32 bits (parse_grammar refuses longer texts).
+  void push_back(SymbolId symbol, std::vector<Expression> parameters,
+                 std::size_t offset);
 
-  /// The modules as written.
-  [[nodiscard]] const std::vector<ModuleTemplate>& modules() const noexcept {
-    return modules_;
-  }
   [[nodiscard]] std::size_t size() const noexcept { return symbols_.size(); }
   [[nodiscard]] const std::vector<SymbolId>& symbols() const noexcept {
     return symbols_;
+  }
+  /// The byte offset in the source of module i. @pre `i < size()`.
+  [[nodiscard]] std::size_t offset(std::size_t i) const { return offsets_[i]; }
+  /// The parameter expressions of module i. @pre `i < size()`.
+  [[nodiscard]] std::span<const Expression> parameters(std::size_t i) const {
+    return std::span<const Expression>(expressions_)
+        .subspan(begins_[i], begins_[i + 1] - begins_[i]);
   }
   /// Where module i's values start in an instantiated parameter array; entry
   /// `size()` is the total.
@@ -75,10 +75,14 @@ class Successor {
   /// @throws ParseError from Expression::evaluate.
   void instantiate(std::span<const double> slots,
                    std::vector<double>& out) const;
+  /// Makes room for `modules` modules without their parameters.
+  void reserve(std::size_t modules);
+  /// Frees the room the arrays have beyond their size.
+  void shrink_to_fit();
 
  private:
-  std::vector<ModuleTemplate> modules_;
   std::vector<SymbolId> symbols_;
+  std::vector<std::uint32_t> offsets_;
   std::vector<std::uint32_t> begins_{0};
   std::vector<Expression> expressions_;
   std::vector<double> constant_values_;

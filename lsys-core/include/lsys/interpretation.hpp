@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "lsys/derivation.hpp"
+#include "lsys/diagnostic.hpp"
 #include "lsys/grammar.hpp"
 #include "lsys/module_string.hpp"
 #include "lsys/skeleton.hpp"
@@ -19,16 +20,27 @@ struct InterpretOptions {
 
 /// Derives the grammar and walks the result with the 3D turtle, applying the
 /// homomorphism to each module first (docs/turtle.md).
-/// @throws ParseError as Derivation, and when more segments are drawn than
-///   `derivation.max_segments`.
+/// @throws ParseError as Derivation; when more segments are drawn than
+///   `derivation.max_segments`; for a colour index outside 0 to
+///   kMaxColorIndex; and when a position or width overflows. Errors of
+///   values are placed at the first module of the grammar that can make
+///   them (a module string keeps no source places).
 [[nodiscard]] Skeleton interpret(const Grammar& grammar,
                                  const DerivationOptions& derivation = {},
                                  const InterpretOptions& options = {});
 
 /// Walks a given string of modules of the grammar's alphabet.
-/// @throws ParseError when a homomorphism expression fails.
+/// @throws ParseError when a homomorphism expression fails, and as
+///   interpret for values out of range.
 [[nodiscard]] Skeleton interpret_string(const Grammar& grammar,
                                         const ModuleString& modules,
                                         const InterpretOptions& options = {});
+
+/// The error for a skeleton with no segment and no polygon, which cannot be
+/// built: placed at what makes it empty where that can be known (the `step`
+/// setting when it is 0, an `F(0)`), else at the axiom.
+/// @pre `skeleton` has no segment and no polygon.
+[[nodiscard]] ParseError nothing_drawn_error(const Grammar& grammar,
+                                             const Skeleton& skeleton);
 
 }  // namespace lsys

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -42,6 +43,7 @@ class ModuleString {
   }
 
   /// Appends a module.
+  /// @pre `parameter_count() + parameters.size()` fits 32 bits.
   void push_back(SymbolId symbol, std::span<const double> parameters,
                  std::uint32_t generation) {
     entries_.push_back(Entry{symbol, generation,
@@ -60,6 +62,31 @@ class ModuleString {
     entries_.clear();
     params_.clear();
   }
+  /// The number of parameter values of all modules.
+  [[nodiscard]] std::size_t parameter_count() const noexcept {
+    return params_.size();
+  }
+  /// The bytes the string holds, counting the room reserved for growth.
+  [[nodiscard]] std::size_t memory_bytes() const noexcept {
+    return entries_.capacity() * sizeof(Entry) +
+           params_.capacity() * sizeof(double);
+  }
+  /// memory_bytes() after appending a module of `parameters` values, when
+  /// a full array doubles its room (as std::vector does).
+  [[nodiscard]] std::size_t memory_bytes_after_push(
+      std::size_t parameters) const noexcept {
+    const auto grown = [](std::size_t size, std::size_t capacity,
+                          std::size_t more) {
+      return size + more <= capacity ? capacity
+                                     : std::max(2 * capacity, size + more);
+    };
+    return grown(entries_.size(), entries_.capacity(), 1) * sizeof(Entry) +
+           grown(params_.size(), params_.capacity(), parameters) *
+               sizeof(double);
+  }
+  /// Keeps the modules i with `keep[i]`, in order, in place.
+  /// @pre `keep.size() == size()`.
+  void retain(const std::vector<bool>& keep);
   /// Reserves room for `modules` modules and `parameters` values.
   void reserve(std::size_t modules, std::size_t parameters) {
     entries_.reserve(modules);

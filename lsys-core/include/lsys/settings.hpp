@@ -25,6 +25,9 @@ struct ExtraSetting {
   std::size_t offset;  ///< byte offset of the value, for diagnostics
 };
 
+/// The largest colour index (the `colour` setting, `'(c)`, `;(c)`, `,(c)`).
+inline constexpr int kMaxColorIndex = 1 << 20;
+
 /// The settings of a `.ls` file (docs/language.md lists every one with its
 /// spellings). Lengths are in model units; widths are diameters.
 struct Settings {
@@ -57,6 +60,8 @@ struct Settings {
 
   /// Byte offset of the `n` setting, if the file has one.
   std::optional<std::size_t> derivation_length_offset;
+  /// Byte offset of the `step` setting's value, if the file has one.
+  std::optional<std::size_t> step_offset;
 };
 
 }  // namespace lsys

@@ -47,9 +47,24 @@ class SourceFile {
   std::vector<std::size_t> line_starts_;
 };
 
-/// Reads a file into a shared SourceFile named by its path.
-/// @throws ParseError (line 0) when the file cannot be read.
+/// The largest `.ls` file lsolid reads, 16 MiB: thousands of times the
+/// largest L-system of the source documents, and small enough that reading
+/// it takes a fraction of a second and well under a gigabyte.
+inline constexpr std::size_t kMaxSourceBytes = std::size_t{16} << 20U;
+
+/// Reads a file into a shared SourceFile named by its path, reading at most
+/// `max_bytes + 1` bytes (so that a device such as /dev/zero ends too).
+/// @throws ParseError (line 0) when the file cannot be read, and at the
+///   place of byte `max_bytes` when the file is longer than that.
 [[nodiscard]] std::shared_ptr<const SourceFile> load_source(
-    const std::filesystem::path& path);
+    const std::filesystem::path& path, std::size_t max_bytes = kMaxSourceBytes);
+
+/// Checks that a source is UTF-8 text: well-formed UTF-8 (no overlong forms,
+/// surrogates or code points above U+10FFFF) without control characters
+/// other than tab and line breaks. A UTF-16 or UTF-32 file is named as such.
+/// @throws ParseError at the first offending byte, naming it (`invalid
+///   UTF-8 byte 0xFF`, `control character U+001B`, `the file is UTF-16
+///   (little-endian); save it as UTF-8`).
+void check_text(const SourceFile& source);
 
 }  // namespace lsys

@@ -29,14 +29,16 @@ enum class MeshFormat {
 /// Reads an STL (binary or ASCII, told apart by content), OFF, 3MF or OBJ
 /// file; the meshes of a 3MF or the objects of an OBJ become one mesh. STL
 /// vertices with equal coordinates are merged.
-/// @throws IoError when the file cannot be read or is malformed.
+/// @throws IoError when the file cannot be read (missing, not a regular
+///   file); lsys::ParseError when it is malformed, at its line and column
+///   in a text format (ASCII STL, OFF, OBJ).
 [[nodiscard]] TriangleMesh read_mesh(const std::filesystem::path& path);
 
 /// Reads a file's volumes and colours: a 3MF's mesh objects with the
 /// colour index of each triangle from materials named "colour N" (as
 /// lsolid writes them), an OBJ's objects with their `usemtl colour_N`;
 /// any other file is one volume of colour 0.
-/// @throws IoError when the file cannot be read or is malformed.
+/// @throws IoError and lsys::ParseError as read_mesh.
 [[nodiscard]] std::vector<ColoredMesh> read_colored(
     const std::filesystem::path& path);
 

@@ -109,8 +109,9 @@ struct Solid {
 
 /// Derives, interprets, scales, meshes, unites and validates. The mesh is
 /// returned even when the validation fails; callers decide not to write it.
-/// @throws lsys::ParseError for bad input or size limits, GeometryError when
-///   the model is empty or the union fails.
+/// @throws lsys::ParseError for bad input, size limits, or a skeleton that
+///   draws nothing (lsys::nothing_drawn_error), GeometryError when the union
+///   fails.
 [[nodiscard]] Solid build_solid(const lsys::Grammar& grammar,
                                 const SolidOptions& options = {});
 

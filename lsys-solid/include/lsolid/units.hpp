@@ -12,7 +12,8 @@ namespace lsolid {
 /// and returns it in millimetres.
 /// @param what names the value in diagnostics, e.g. `--wall`.
 /// @throws lsys::ParseError (file `what`, with the column) for a missing or
-///   bad number, an unknown unit, or a value that is not positive.
+///   bad number, an unknown unit, a value that is not positive, or one
+///   above 1000000 mm (1 km).
 [[nodiscard]] double parse_length_mm(std::string_view text,
                                      const std::string& what);
 

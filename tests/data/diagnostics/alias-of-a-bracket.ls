@@ -1,0 +1,2 @@
+aliases: [=F
+ω: F

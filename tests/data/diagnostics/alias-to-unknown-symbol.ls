@@ -1,0 +1,2 @@
+aliases: f=Q
+ω: f

@@ -1,0 +1,3 @@
+N=2
+axiom: NF
+N → F[+N]

@@ -1,0 +1,3 @@
+angle: 20
+angle factor: 16
+ω: F

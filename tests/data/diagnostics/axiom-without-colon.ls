@@ -1,0 +1,3 @@
+n=1
+axiom X
+X -> FX

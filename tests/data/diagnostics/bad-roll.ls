@@ -1,0 +1,2 @@
+roll: left
+ω: F

@@ -1,0 +1,2 @@
+axiom: F
+F → F‮F]

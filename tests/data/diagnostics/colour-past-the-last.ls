@@ -1,0 +1,2 @@
+colour: 1048576
+axiom: F'F

@@ -1,0 +1,2 @@
+aliases: f=F f=G
+ω: f

@@ -1,0 +1,3 @@
+Angle 6
+Axiom F
+F=F+F--F+F

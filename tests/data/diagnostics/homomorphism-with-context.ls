@@ -1,0 +1,3 @@
+ω: AB
+homomorphism:
+A < B → F

@@ -1,0 +1,3 @@
+ignore: +-
+consider: AB
+ω: F

@@ -1,0 +1,2 @@
+#include "plant.ls"
+ω: F

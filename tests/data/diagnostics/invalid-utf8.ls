@@ -1,0 +1,2 @@
+axiom: Fÿ[F
+F -> F

@@ -1,0 +1,3 @@
+n=2
+angle: 90°
+axiom: F

@@ -1,0 +1,2 @@
+maximum depth: 1001
+ω: F

@@ -1,0 +1,2 @@
+module bud(x)
+ω: bud(1, 2)

@@ -1,0 +1,4 @@
+n=3
+axiom: A
+A → AB
+B → A

@@ -1,0 +1,2 @@
+#define r2 0.6
+axiom: F(r2)

@@ -1,0 +1,2 @@
+base: tripod
+ω: F

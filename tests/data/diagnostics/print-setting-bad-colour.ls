@@ -1,0 +1,2 @@
+colors: #7B4A2A red
+ω: F

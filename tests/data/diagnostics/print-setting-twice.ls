@@ -1,0 +1,3 @@
+wall: 0.8mm
+wall: 2mm
+ω: F

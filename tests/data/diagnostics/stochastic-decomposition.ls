@@ -1,0 +1,3 @@
+ω: A
+decomposition:
+A -(0.5)→ F

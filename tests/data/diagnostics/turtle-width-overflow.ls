@@ -1,0 +1,2 @@
+width scale: 1e10
+axiom: !(1e300)F

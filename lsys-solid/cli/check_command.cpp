@@ -13,8 +13,8 @@
 #include "lsolid/errors.hpp"
 #include "lsolid/mesh_io.hpp"
 #include "lsolid/validate.hpp"
-#include "pieces.hpp"
 #include "lsys/diagnostic.hpp"
+#include "pieces.hpp"
 
 namespace lsolid::cli {
 namespace {

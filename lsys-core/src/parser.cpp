@@ -3,8 +3,8 @@
 //
 // Reads `.ls` files: the notations of ABOP's captions (Prusinkiewicz and
 // Lindenmayer 1990), cpfg (`#define`, `derivation length:`, `-->`), L-Py
-// (`Axiom:`, `module`), Houdini (`premise:`) and the source documents in
-// shared/seeds, as docs/language.md describes. Two passes: the first sorts
+// (`Axiom:`, `module`), Houdini (`premise:`) and the source documents of
+// printables/, as docs/language.md describes. Two passes: the first sorts
 // lines into settings, productions and the axiom and collects the names of
 // predecessors, so that the second can tokenise multi-character module names
 // by longest match wherever they appear (ABOP fig. 1.26).

@@ -159,5 +159,13 @@ int main(int argc, char** argv) {
   } catch (const std::bad_alloc&) {
     std::fputs("error: out of memory\n", stderr);
     return kExitGeometry;
+  } catch (const std::exception& e) {
+    // A check inside a library (CGAL's preconditions throw) that no stage
+    // turned into one of lsolid's errors: still an error, never a crash.
+    std::fprintf(stderr,
+                 "error: an internal check failed (a bug in lsolid; please "
+                 "report it with this file): %s\n",
+                 e.what());
+    return kExitGeometry;
   }
 }

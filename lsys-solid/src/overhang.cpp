@@ -3,7 +3,8 @@
 //
 // The 45° rule of FDM printing: a layer may overhang the one below by about
 // its own height, so faces whose normal points down more steeply than 45°
-// below the horizontal need support (geometry-and-printing.md, slicers).
+// below the horizontal need support (the default of PrusaSlicer's and
+// Cura's support generators).
 #include "lsolid/overhang.hpp"
 
 #include <algorithm>

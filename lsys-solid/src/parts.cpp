@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: MIT
 //
 // Meshing the skeleton into few, well-conditioned boolean operands
-// (shared/reference/geometry-and-printing.md §7): one swept tube per
+// (docs/design.md, "Parts"): one swept tube per
 // unbranched chain, with rings shared between segments and mitred at bends,
 // so that no internal caps exist; branch points meshed directly as the
 // convex hull of the rings of the tubes that meet there (B-Mesh, Ji et al.

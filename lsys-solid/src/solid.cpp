@@ -103,7 +103,7 @@ TriangleMesh cut_and_lower(const TriangleMesh& mesh, double z_mm,
   TriangleMesh cut;
   try {
     cut = cut_below(mesh, z_mm);
-  } catch (const GeometryError&) {
+  } catch (const std::exception&) {  // GeometryError, or CGAL's checks
     return {};
   }
   for (glm::dvec3& p : cut.vertices) p.z -= z_mm;
@@ -289,9 +289,10 @@ void unite_and_finish(std::vector<Part> parts, const SolidOptions& options,
           mesh, {.tolerance_mm = options.print.tolerance_mm,
                  .max_triangles = options.max_triangles,
                  .progress = [&](double done) { tell("decimation", done); }});
-    } catch (const GeometryError&) {
-      // A union that is not a 2-manifold cannot be decimated; it is
-      // written as it is and its check says why.
+    } catch (const std::exception&) {
+      // A union that is not a 2-manifold cannot be decimated (GeometryError;
+      // CGAL's checks throw too); it is written as it is and its check says
+      // why.
       decimated.mesh.triangles.clear();
     }
     report.decimation = decimated.stats;

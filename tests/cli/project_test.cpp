@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "support/run_command.hpp"
 
@@ -45,6 +46,64 @@ TEST(Project, CiRunsTheReadmesTestCommand) {
   ASSERT_EQ(commands.size(), 2U);
   const std::string ci = testing::read_text(kSource / ".ci/run");
   EXPECT_NE(ci.find("\n" + commands[1] + "\n"), std::string::npos);
+}
+
+// Every source file of the project, relative to the source folder.
+std::vector<std::filesystem::path> sources() {
+  std::vector<std::filesystem::path> out;
+  for (const char* folder : {"lsys-core", "lsys-solid", "tests", "bench"}) {
+    for (const auto& entry :
+         std::filesystem::recursive_directory_iterator(kSource / folder)) {
+      const std::string ext = entry.path().extension().string();
+      // This file names what it looks for.
+      if (entry.path().filename() == "project_test.cpp") continue;
+      if (ext == ".cpp" || ext == ".hpp") {
+        out.push_back(std::filesystem::relative(entry.path(), kSource));
+      }
+    }
+  }
+  return out;
+}
+
+TEST(Project, CgalIsIncludedOnlyInItsFolderUnderOnePolicy) {
+  // Inline CGAL code is shared between the translation units that include
+  // it, so its checks are set once, in lsys-solid/CMakeLists.txt, for all of
+  // them; a file that set its own would make which check runs depend on the
+  // linker.
+  std::size_t cgal_files = 0;
+  for (const auto& file : sources()) {
+    const std::string text = testing::read_text(kSource / file);
+    const bool in_cgal_folder =
+        file.string().starts_with("lsys-solid/src/cgal/");
+    if (text.find("#include <CGAL/") != std::string::npos) {
+      EXPECT_TRUE(in_cgal_folder) << file << " includes CGAL";
+      ++cgal_files;
+    }
+    for (const char* macro : {"#undef NDEBUG", "#define NDEBUG",
+                              "#define CGAL_NO_", "#define CGAL_CHECK_"}) {
+      EXPECT_EQ(text.find(macro), std::string::npos) << file << ": " << macro;
+    }
+  }
+  EXPECT_GE(cgal_files, 10U);
+  const std::string cmake =
+      testing::read_text(kSource / "lsys-solid/CMakeLists.txt");
+  EXPECT_NE(cmake.find("target_compile_options(lsolid_cgal PRIVATE -UNDEBUG)"),
+            std::string::npos);
+  EXPECT_NE(cmake.find("CGAL_NO_ASSERTIONS"), std::string::npos);
+}
+
+TEST(Project, NoCommentOrDocumentCitesTheSharedFolder) {
+  for (const auto& file : sources()) {
+    const std::string text = testing::read_text(kSource / file);
+    EXPECT_EQ(text.find("shared/reference"), std::string::npos) << file;
+    EXPECT_EQ(text.find("shared/seeds"), std::string::npos) << file;
+  }
+  for (const auto& entry :
+       std::filesystem::recursive_directory_iterator(kSource / "docs")) {
+    if (entry.path().extension() != ".md") continue;
+    const std::string text = testing::read_text(entry.path());
+    EXPECT_EQ(text.find("shared/"), std::string::npos) << entry.path();
+  }
 }
 
 }  // namespace

@@ -14,6 +14,9 @@ struct RoundingStats {
   std::size_t slivers_removed =
       0;  ///< almost degenerate faces collapsed or flipped
   std::size_t faces_rebuilt = 0;  ///< self-intersecting faces replaced
+  /// Rebuilds CGAL refused (its preconditions) and that were left to the
+  /// next pass.
+  std::size_t repairs_refused = 0;
   /// The volume of the result less that of the input, in mm³, summed over
   /// calls.
   double volume_change_mm3 = 0.0;
@@ -21,7 +24,7 @@ struct RoundingStats {
 
 /// Rounds a union's coordinates to what the file will store (floats for STL)
 /// and mends what rounding breaks. An exact union has slivers, edges of
-/// 10⁻⁸ mm and near-tangent sheets (geometry-and-printing.md §0); rounding
+/// 10⁻⁸ mm and near-tangent sheets (docs/design.md, "Rounding"); rounding
 /// them makes degenerate and self-intersecting faces. Each pass rounds,
 /// collapses edges shorter than 10⁻⁴ mm, flips caps lower than that, and
 /// rebuilds the faces that still intersect (CGAL's

@@ -2,18 +2,12 @@
 // SPDX-License-Identifier: MIT
 //
 // The union of many closed parts with CGAL 5.5's corefinement
-// (PMP::corefine_and_compute_union) over Epeck. Measured on this kind of
-// machine (shared/reference/geometry-and-printing.md §0): chained unions with
-// inexact constructions self-intersect; a balanced pairing in Z-order is ten
-// times faster than a sequential fold; pairs with disjoint boxes need no
-// boolean (Manifold's BatchUnion does the same).
-// CGAL's preconditions stay on, as exceptions, in release builds too: with
-// NDEBUG a violated precondition of the corefinement is a crash rather
-// than an error (geometry-and-printing.md, addendum). Assertions and
-// postconditions, the costly checks, stay off.
-#undef NDEBUG
-#define CGAL_NO_ASSERTIONS
-#define CGAL_NO_POSTCONDITIONS
+// (PMP::corefine_and_compute_union) over Epeck. Measured on a 2-core machine
+// of this kind (docs/design.md, "Union"): chained unions with inexact
+// constructions self-intersect; a balanced pairing in Z-order is ten times
+// faster than a sequential fold; pairs with disjoint boxes need no boolean
+// (Manifold's BatchUnion does the same). CGAL's preconditions are on, as
+// exceptions, in every CGAL translation unit (lsys-solid/CMakeLists.txt).
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>

@@ -7,9 +7,6 @@
 // that decides whether pieces stitched at their rings may stay one operand of
 // the union. Both use exact predicates on the doubles given (EPICK).
 // Preconditions stay on, as exceptions (see boolean_cgal.cpp).
-#undef NDEBUG
-#define CGAL_NO_ASSERTIONS
-#define CGAL_NO_POSTCONDITIONS
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>

@@ -6,20 +6,23 @@
 // Lparser's leaves overlap in layers) are united in the plane before they
 // become plates. United as solids they would meet face on face, with
 // coplanar caps and coincident walls, which the exact 3D union turns into
-// slivers that rounding then folds. The 2D union is exact (CGAL's Boolean
-// set operations over Epeck); its regions are triangulated with a
-// constrained Delaunay triangulation whose inside is found by nesting
-// level, as in the CGAL 2D triangulation manual's polygon example.
-#include <CGAL/Boolean_set_operations_2.h>
+// slivers that rounding then folds. The union is made with a constrained
+// Delaunay triangulation of every polygon's edges, intersections computed
+// exactly (Epeck, Exact_intersections_tag): each face lies wholly inside or
+// outside each polygon, so a face is in the union when its centroid is in
+// some polygon, and the union's boundary is the edges between faces in and
+// out. (CGAL's Boolean set operations would do the same, but their
+// arrangement code does not compile with the precondition policy that every
+// CGAL translation unit shares; see lsys-solid/CMakeLists.txt.)
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_set_2.h>
+#include <CGAL/Polygon_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <deque>
 #include <map>
+#include <utility>
 
 #include "plate_geometry.hpp"
 
@@ -28,143 +31,157 @@ namespace {
 
 using Exact = CGAL::Exact_predicates_exact_constructions_kernel;
 using ExactPolygon = CGAL::Polygon_2<Exact>;
-using ExactRegion = CGAL::Polygon_with_holes_2<Exact>;
-
-using Inexact = CGAL::Exact_predicates_inexact_constructions_kernel;
 struct FaceInfo {
-  int nesting = -1;  // even: outside, odd: inside the region
+  bool inside = false;
+  int region = -1;
 };
-using VertexBase =
-    CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, Inexact>;
 using FaceBase = CGAL::Constrained_triangulation_face_base_2<
-    Inexact, CGAL::Triangulation_face_base_with_info_2<FaceInfo, Inexact>>;
+    Exact, CGAL::Triangulation_face_base_with_info_2<FaceInfo, Exact>>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<
-    Inexact, CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>,
-    CGAL::No_constraint_intersection_tag>;
+    Exact,
+    CGAL::Triangulation_data_structure_2<
+        CGAL::Triangulation_vertex_base_2<Exact>, FaceBase>,
+    CGAL::Exact_intersections_tag>;
+using Face = Cdt::Face_handle;
+using Vertex = Cdt::Vertex_handle;
 
-// Nesting levels: faces reached from the infinite face without crossing a
-// constraint are at level 0, and each constrained edge crossed adds one.
-void mark_nesting(Cdt& cdt) {
-  std::deque<Cdt::Edge> borders;
-  const auto flood = [&](Cdt::Face_handle start, int level) {
-    std::deque<Cdt::Face_handle> queue{start};
-    while (!queue.empty()) {
-      const Cdt::Face_handle f = queue.front();
-      queue.pop_front();
-      if (f->info().nesting != -1) continue;
-      f->info().nesting = level;
-      for (int i = 0; i < 3; ++i) {
-        const Cdt::Face_handle next = f->neighbor(i);
-        if (next->info().nesting != -1) continue;
-        if (cdt.is_constrained(Cdt::Edge(f, i))) {
-          borders.emplace_back(f, i);
-        } else {
-          queue.push_back(next);
-        }
-      }
-    }
-  };
-  flood(cdt.infinite_face(), 0);
-  while (!borders.empty()) {
-    const auto [f, i] = borders.front();
-    borders.pop_front();
-    const Cdt::Face_handle next = f->neighbor(i);
-    if (next->info().nesting == -1) flood(next, f->info().nesting + 1);
-  }
+bool is_in(const Cdt& cdt, Face f) {
+  return !cdt.is_infinite(f) && f->info().inside;
 }
 
-std::optional<PlanarRegion> triangulated(const ExactRegion& exact) {
-  PlanarRegion region;
-  // Rounding may bring two exact points onto one double: that region would
-  // pinch, so it is refused.
-  std::map<std::pair<double, double>, std::uint32_t> seen;
-  const auto add_ring = [&](const ExactPolygon& ring) {
-    std::vector<std::uint32_t> indices;
-    for (auto v = ring.vertices_begin(); v != ring.vertices_end(); ++v) {
-      const glm::dvec2 p(CGAL::to_double(v->x()), CGAL::to_double(v->y()));
-      const auto index = static_cast<std::uint32_t>(region.points.size());
-      if (!seen.emplace(std::pair(p.x, p.y), index).second) return false;
-      region.points.push_back(p);
-      indices.push_back(index);
-    }
-    region.rings.push_back(std::move(indices));
-    return true;
+// The polygon as given, without repeated points; empty if it is not simple.
+ExactPolygon simple_polygon(const std::vector<glm::dvec2>& points) {
+  ExactPolygon polygon;
+  for (const glm::dvec2& p : points) {
+    const Exact::Point_2 q(p.x, p.y);
+    if (polygon.size() > 0 && *(polygon.vertices_end() - 1) == q) continue;
+    polygon.push_back(q);
+  }
+  if (polygon.size() > 1 &&
+      *polygon.vertices_begin() == *(polygon.vertices_end() - 1)) {
+    polygon.erase(polygon.vertices_end() - 1);
+  }
+  if (polygon.size() < 3 || !polygon.is_simple()) return {};
+  return polygon;
+}
+
+// One region: the inside faces of `region`, their vertices rounded to
+// doubles, and the boundary chained into rings.
+std::optional<PlanarRegion> extract(const Cdt& cdt, int region) {
+  PlanarRegion out;
+  std::map<Vertex, std::uint32_t> index;
+  std::map<std::pair<double, double>, Vertex> rounded;
+  const auto index_of = [&](Vertex v) -> std::optional<std::uint32_t> {
+    const auto it = index.find(v);
+    if (it != index.end()) return it->second;
+    const glm::dvec2 p(CGAL::to_double(v->point().x()),
+                       CGAL::to_double(v->point().y()));
+    // Two exact points that round to one double would pinch the plate.
+    if (!rounded.emplace(std::pair(p.x, p.y), v).second) return std::nullopt;
+    const auto i = static_cast<std::uint32_t>(out.points.size());
+    out.points.push_back(p);
+    index.emplace(v, i);
+    return i;
   };
-  if (!add_ring(exact.outer_boundary())) return std::nullopt;
-  for (auto hole = exact.holes_begin(); hole != exact.holes_end(); ++hole) {
-    if (!add_ring(*hole)) return std::nullopt;
-  }
-  Cdt cdt;
-  std::vector<Cdt::Vertex_handle> handles;
-  for (std::uint32_t i = 0; i < region.points.size(); ++i) {
-    const Cdt::Vertex_handle v =
-        cdt.insert(Inexact::Point_2(region.points[i].x, region.points[i].y));
-    v->info() = i;
-    handles.push_back(v);
-  }
-  try {
-    for (const std::vector<std::uint32_t>& ring : region.rings) {
-      for (std::size_t k = 0; k < ring.size(); ++k) {
-        cdt.insert_constraint(handles[ring[k]],
-                              handles[ring[(k + 1) % ring.size()]]);
-      }
+  // Boundary edges, oriented with the region on their left.
+  std::map<std::uint32_t, std::uint32_t> next;
+  for (const Face f : cdt.finite_face_handles()) {
+    if (!f->info().inside || f->info().region != region) continue;
+    std::array<std::uint32_t, 3> t{};
+    for (int k = 0; k < 3; ++k) {
+      const std::optional<std::uint32_t> i = index_of(f->vertex(k));
+      if (!i) return std::nullopt;
+      t[static_cast<std::size_t>(k)] = *i;
     }
-  } catch (const std::exception&) {
-    // Rounded rings that cross would need new points.
-    return std::nullopt;
-  }
-  if (cdt.number_of_vertices() != region.points.size()) return std::nullopt;
-  mark_nesting(cdt);
-  for (const Cdt::Face_handle f : cdt.finite_face_handles()) {
-    if (f->info().nesting % 2 != 1) continue;
-    region.triangles.push_back(
-        {f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
-  }
-  // Every boundary edge must border exactly one inside triangle, on its
-  // left: otherwise the rounded rings no longer bound this region.
-  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
-  for (const auto& t : region.triangles) {
-    for (int k = 0; k < 3; ++k) ++edges[{t[k], t[(k + 1) % 3]}];
-  }
-  for (const std::vector<std::uint32_t>& ring : region.rings) {
-    for (std::size_t k = 0; k < ring.size(); ++k) {
-      const auto it = edges.find({ring[k], ring[(k + 1) % ring.size()]});
-      if (it == edges.end() || it->second != 1) return std::nullopt;
+    out.triangles.push_back(t);
+    for (int k = 0; k < 3; ++k) {
+      if (is_in(cdt, f->neighbor(k))) continue;
+      const std::uint32_t from = t[static_cast<std::size_t>(Cdt::ccw(k))];
+      const std::uint32_t to = t[static_cast<std::size_t>(Cdt::cw(k))];
+      // A vertex with two boundary edges leaving it is a pinch point.
+      if (!next.emplace(from, to).second) return std::nullopt;
     }
   }
-  return region;
+  while (!next.empty()) {
+    std::vector<std::uint32_t> ring;
+    std::uint32_t at = next.begin()->first;
+    while (true) {
+      const auto it = next.find(at);
+      if (it == next.end()) break;
+      ring.push_back(at);
+      at = it->second;
+      next.erase(it);
+    }
+    if (ring.size() < 3 || at != ring.front()) return std::nullopt;
+    out.rings.push_back(std::move(ring));
+  }
+  // Rounding must not turn a triangle over or flatten it.
+  for (const auto& t : out.triangles) {
+    const auto point = [&](std::uint32_t i) {
+      return CGAL::Epick::Point_2(out.points[i].x, out.points[i].y);
+    };
+    if (CGAL::orientation(point(t[0]), point(t[1]), point(t[2])) !=
+        CGAL::LEFT_TURN) {
+      return std::nullopt;
+    }
+  }
+  return out;
 }
 
 }  // namespace
 
 std::optional<std::vector<PlanarRegion>> polygon_union(
     const std::vector<std::vector<glm::dvec2>>& polygons) {
-  CGAL::Polygon_set_2<Exact> united;
+  std::vector<ExactPolygon> simple;
+  Cdt cdt;
   for (const std::vector<glm::dvec2>& points : polygons) {
-    ExactPolygon polygon;
-    for (const glm::dvec2& p : points) {
-      const Exact::Point_2 q(p.x, p.y);
-      if (polygon.size() > 0 && *(polygon.vertices_end() - 1) == q) continue;
-      polygon.push_back(q);
-    }
-    if (polygon.size() > 1 &&
-        *polygon.vertices_begin() == *(polygon.vertices_end() - 1)) {
-      polygon.erase(polygon.vertices_end() - 1);
-    }
-    if (polygon.size() < 3 || !polygon.is_simple()) return std::nullopt;
+    ExactPolygon polygon = simple_polygon(points);
+    if (polygon.size() == 0) return std::nullopt;
     if (polygon.orientation() == CGAL::COLLINEAR) continue;
-    if (polygon.is_clockwise_oriented()) polygon.reverse_orientation();
-    united.join(polygon);
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+      cdt.insert_constraint(polygon.vertex(k),
+                            polygon.vertex((k + 1) % polygon.size()));
+    }
+    simple.push_back(std::move(polygon));
   }
-  std::vector<ExactRegion> exact;
-  united.polygons_with_holes(std::back_inserter(exact));
-  std::vector<PlanarRegion> regions;
-  for (const ExactRegion& e : exact) {
-    std::optional<PlanarRegion> region = triangulated(e);
+  // A face is in the union when its centroid is inside some polygon: no
+  // polygon edge crosses a face, so the whole face is.
+  for (const Face f : cdt.finite_face_handles()) {
+    const Exact::Point_2 c = CGAL::centroid(
+        f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+    for (const ExactPolygon& polygon : simple) {
+      if (polygon.bounded_side(c) == CGAL::ON_BOUNDED_SIDE) {
+        f->info().inside = true;
+        break;
+      }
+    }
+  }
+  // Regions: inside faces joined across edges that are not boundary.
+  int regions = 0;
+  for (const Face start : cdt.finite_face_handles()) {
+    if (!start->info().inside || start->info().region >= 0) continue;
+    std::deque<Face> queue{start};
+    start->info().region = regions;
+    while (!queue.empty()) {
+      const Face f = queue.front();
+      queue.pop_front();
+      for (int k = 0; k < 3; ++k) {
+        const Face n = f->neighbor(k);
+        if (is_in(cdt, n) && n->info().region < 0) {
+          n->info().region = regions;
+          queue.push_back(n);
+        }
+      }
+    }
+    ++regions;
+  }
+  std::vector<PlanarRegion> out;
+  for (int r = 0; r < regions; ++r) {
+    std::optional<PlanarRegion> region = extract(cdt, r);
     if (!region) return std::nullopt;
-    regions.push_back(std::move(*region));
+    out.push_back(std::move(*region));
   }
-  return regions;
+  return out;
 }
 
 }  // namespace lsolid

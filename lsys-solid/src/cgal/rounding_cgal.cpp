@@ -78,8 +78,17 @@ TriangleMesh round_and_repair(const TriangleMesh& input, bool float_coordinates,
     }
     stats.faces_rebuilt += bad.size();
     if (!bad.empty()) {
-      PMP::experimental::remove_self_intersections(
-          bad, mesh, CGAL::parameters::preserve_genus(false));
+      // CGAL refuses (a precondition, as an exception) to rebuild around a
+      // face that rounding made degenerate; it is then rebuilt in place, and
+      // the next pass collapses that face first.
+      Mesh before_repair = mesh;
+      try {
+        PMP::experimental::remove_self_intersections(
+            bad, mesh, CGAL::parameters::preserve_genus(false));
+      } catch (const CGAL::Failure_exception&) {
+        mesh = std::move(before_repair);
+        ++stats.repairs_refused;
+      }
       mesh.collect_garbage();
     }
   }

@@ -5,9 +5,6 @@
 // (EPICK): coordinates are doubles, and every predicate is decided exactly.
 // CGAL's preconditions stay on, as exceptions, in release builds too (see
 // boolean_cgal.cpp): a check must report, not crash.
-#undef NDEBUG
-#define CGAL_NO_ASSERTIONS
-#define CGAL_NO_POSTCONDITIONS
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>

@@ -330,8 +330,11 @@ class Interpreter {
       state_.width = std::max(0.0, params[1] * settings_.width_scale);
     }
     check_finite();
-    if (length == 0.0) ++skeleton_.zero_length_segments;
-    if (length != 0.0) {
+    // A step far smaller than where the turtle stands (F(1e38) at 1e308)
+    // moves it nowhere: no segment, as for F(0) (found by ls_fuzzer).
+    const bool moved = length != 0.0 && turtle.position() != p0;
+    if (!moved) ++skeleton_.zero_length_segments;
+    if (moved) {
       skeleton_.segments.push_back(
           Segment{p0, turtle.position(), start,
                   generation_width(state_.width, generation), state_.color,

@@ -89,7 +89,10 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
       }
     }
     for (const IndexedTriangle& t : fresh_) {
-      const auto [lo, hi] = box(t);
+      // Named, not a structured binding: Clang 14 cannot capture those.
+      const std::pair<glm::dvec3, glm::dvec3> bounds = box(t);
+      const glm::dvec3& lo = bounds.first;
+      const glm::dvec3& hi = bounds.second;
       ++query_stamp_;
       bool hit = false;
       for_cells(lo, hi, [&](const std::vector<int>& cell) {

@@ -342,6 +342,15 @@ std::string nothing_drawn(const std::string& text) {
   return testing::located_error_of([&] { throw nothing_drawn_error(g, s); });
 }
 
+TEST(Interpretation, DrawsNoSegmentForAStepThatMovesTheTurtleNowhere) {
+  // Found by ls_fuzzer: at 1e308 a step of 1e38 is lost to rounding, and a
+  // segment from a point to itself broke the skeleton's invariant.
+  const Skeleton s = walk("axiom: F(1e20)F(1e-10)F(1e-12)\n");
+  ASSERT_EQ(s.segments.size(), 1U);
+  EXPECT_EQ(s.zero_length_segments, 2U);
+  for (const Segment& seg : s.segments) EXPECT_NE(seg.p0, seg.p1);
+}
+
 TEST(Interpretation, PlacesWhatMakesAnEmptyDrawingWhereItCanBeKnown) {
   EXPECT_EQ(walk("\u03C9: FF(0)F(0)\nstep: 0\n").zero_length_segments, 3U);
   EXPECT_EQ(nothing_drawn("n=2\nstep: 0\n\u03C9: F\nF \u2192 FF\n"),

@@ -42,7 +42,8 @@ struct Skeleton {
   /// `{` never closed by `}` (dropped), and `}` without an open `{`.
   std::size_t unclosed_polygons = 0;
   std::size_t unmatched_polygon_ends = 0;
-  /// Segments of length 0 (`F(0)`, or `F` with `step: 0`), not drawn.
+  /// Segments of length 0 (`F(0)`, or `F` with `step: 0`), or too short
+  /// to move the turtle from where it stands, not drawn.
   std::size_t zero_length_segments = 0;
 };
 

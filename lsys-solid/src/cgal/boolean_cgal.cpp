@@ -293,6 +293,7 @@ class Unioner {
         last_failure_ = "the parts touch at a point";
       }
       if (!ok) continue;
+      out = canonical_order(out);
       if (round_points) {
         if (round_new_points(out) || round_and_mend(out)) {
           ++stats_.rounded;
@@ -433,7 +434,7 @@ TriangleMesh subtract(const TriangleMesh& a, const TriangleMesh& b) {
     throw GeometryError(
         "subtracting one volume from another did not give a 2-manifold");
   }
-  return to_triangle_mesh(out);
+  return to_triangle_mesh(canonical_order(out));
 }
 
 }  // namespace lsolid

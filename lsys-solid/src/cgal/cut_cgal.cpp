@@ -90,7 +90,7 @@ TriangleMesh cut_below(const TriangleMesh& input, double z_mm) {
                         e.what());
   }
   mesh.collect_garbage();
-  return to_triangle_mesh(mesh);
+  return to_triangle_mesh(canonical_order(mesh));
 }
 
 }  // namespace lsolid

@@ -1,0 +1,71 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// Fuzzes the .ls reader with derivation and turtle under small limits. Bad
+// input must end in lsys::ParseError; anything else (a crash, a sanitizer
+// report, another exception, or a skeleton that breaks its invariants) is
+// a finding.
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+
+#include "lsys/derivation.hpp"
+#include "lsys/diagnostic.hpp"
+#include "lsys/interpretation.hpp"
+#include "lsys/module_string.hpp"
+#include "lsys/parser.hpp"
+
+namespace {
+
+bool finite(const glm::dvec3& p) {
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+// The skeleton's documented invariants (skeleton.hpp).
+void check(const lsys::Skeleton& skeleton) {
+  for (const lsys::Segment& s : skeleton.segments) {
+    if (!finite(s.p0) || !finite(s.p1) || !(s.start_diameter >= 0.0) ||
+        !(s.end_diameter >= 0.0) || s.p0 == s.p1) {
+      std::abort();
+    }
+    if (s.parent >= static_cast<std::int32_t>(skeleton.segments.size())) {
+      std::abort();
+    }
+  }
+  for (const lsys::Polygon& p : skeleton.polygons) {
+    if (p.points.size() < 3) std::abort();
+    for (const glm::dvec3& q : p.points) {
+      if (!finite(q)) std::abort();
+    }
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data,
+                                      std::size_t size) {
+  if (size > 8192) return 0;
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  const lsys::DerivationOptions limits{.max_segments = 20'000,
+                                       .max_modules = 200'000,
+                                       .max_memory_bytes = 64U << 20U};
+  try {
+    const lsys::Grammar grammar = lsys::parse_grammar_text(
+        text,
+        {.extra_settings = {"wall", "height", "size", "scale", "tolerance",
+                            "base", "colors"}},
+        "fuzz.ls");
+    lsys::DerivationOptions options = limits;
+    // Deep derivations of tiny strings take long without finding more.
+    options.derivation_length =
+        std::min(grammar.settings.derivation_length, 12);
+    const lsys::ModuleString derived = lsys::derive(grammar, options);
+    (void)lsys::to_string(derived, grammar.alphabet);
+    check(lsys::interpret(grammar, options, {}));
+  } catch (const lsys::ParseError& e) {
+    // The message is what a maker reads: it must format.
+    (void)lsys::format_diagnostic(e.diagnostic());
+  }
+  return 0;
+}

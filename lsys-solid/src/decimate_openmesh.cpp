@@ -275,8 +275,13 @@ std::size_t collapse_short_edges(Mesh& mesh, SurfaceDistance& input_surface,
   // less than the tolerance.
   decimater.module(edge_length)
       .set_edge_length(std::min(options.min_edge_mm, options.tolerance_mm));
-  decimater.module(normal_flipping)
-      .set_max_normal_deviation(options.max_normal_deviation_deg);
+  // Only a fold (a normal turned by 90° or more) is refused here: moving a
+  // vertex by less than the edge turns only triangles about that small by
+  // much, and the 45° of the main run left 42 edges under 0.03 mm, the
+  // shortest 0.6 µm, on ABOP fig. 1.26's plant at n = 5 (30, the shortest
+  // 6 µm, with this). The intersection guard and the measured deviation
+  // still hold every collapse.
+  decimater.module(normal_flipping).set_max_normal_deviation(85.0);
   if (!decimater.initialize()) {
     throw GeometryError("cannot set up OpenMesh's decimater");
   }

@@ -31,6 +31,7 @@
 
 #include "cgal/junction_geometry.hpp"
 #include "cgal/plate_geometry.hpp"
+#include "lsolid/validate.hpp"
 #include "union_find.hpp"
 
 namespace lsolid {
@@ -1142,16 +1143,22 @@ class PartBuilder {
         polygon_union(flat);
     if (!regions) return false;
     const std::string label = polygon_list(group);
+    std::vector<Part> plates;
     for (const PlanarRegion& region : *regions) {
       std::vector<glm::dvec3> points;
       for (const glm::dvec2& p : region.points) {
         points.push_back(origin + u * p.x + w * p.y);
       }
-      set_.parts.push_back(
-          Part{plate(points, n, region.rings, region.triangles),
-               "leaf plate of " + label, skeleton_.polygons[group[0]].color});
-      ++set_.plates;
+      plates.push_back(Part{plate(points, n, region.rings, region.triangles),
+                            "leaf plate of " + label,
+                            skeleton_.polygons[group[0]].color});
+      // Back in 3D, a region with points a few ulps apart can make a plate
+      // that cuts itself; the polygons are then plates of their own, as
+      // the union would otherwise refuse the part.
+      if (!validate(plates.back().mesh).is_printable()) return false;
     }
+    for (Part& p : plates) set_.parts.push_back(std::move(p));
+    set_.plates += plates.size();
     return true;
   }
 

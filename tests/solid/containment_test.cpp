@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/vector_relational.hpp>
+
 #include "lsolid/boolean.hpp"
 #include "support/mesh_checks.hpp"
 
@@ -36,6 +38,48 @@ TEST(Containment, FindsPointsDeepInsideEveryPart) {
   }
   EXPECT_GE(per_part[0], 1);
   EXPECT_GE(per_part[1], 1);
+}
+
+TEST(Containment, SkipsASliverWhoseNormalIsTooShortToAimARay) {
+  // A tetrahedron 100 mm up whose first face (the one sampled) is a sliver:
+  // its normal, 1e-15 long, vanished beside the centre's z and made a
+  // degenerate ray that CGAL refused (the blog's trees at full size).
+  TriangleMesh sliver;
+  sliver.vertices = {
+      {0, 0, 100}, {1, 0, 100}, {0.5, 1e-15, 100}, {0.5, 0.5, 101}};
+  sliver.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}};
+  std::vector<Part> parts;
+  parts.push_back(Part{sliver, "sliver"});
+  parts.push_back(Part{box_mesh({0, 0, 0}, {10, 10, 2}), "slab"});
+  std::vector<Witness> found;
+  ASSERT_NO_THROW(found = witnesses(parts));
+  for (const Witness& w : found) {
+    const Box b = bounds(parts[w.part].mesh);
+    EXPECT_TRUE(glm::all(glm::greaterThanEqual(w.point, b.min)));
+    EXPECT_TRUE(glm::all(glm::lessThanEqual(w.point, b.max)));
+  }
+}
+
+TEST(Containment, ShootsNoRayAtAFaceWithoutArea) {
+  // A 6 x 6 x 3 prism whose top holds a zero-area face along its diagonal,
+  // right above the first bottom face's centre: the ray from there meets
+  // it, and CGAL refuses a degenerate triangle (blog tree A at full size).
+  TriangleMesh prism;
+  prism.vertices = {{0, 0, 0}, {6, 0, 0}, {6, 6, 0}, {0, 6, 0}, {0, 0, 3},
+                    {6, 0, 3}, {6, 6, 3}, {0, 6, 3}, {4, 2, 3}};
+  prism.triangles = {{0, 2, 1}, {0, 3, 2}, {4, 5, 7}, {5, 6, 8}, {8, 6, 7},
+                     {5, 8, 7}, {0, 1, 5}, {0, 5, 4}, {1, 2, 6}, {1, 6, 5},
+                     {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
+  std::vector<Part> parts;
+  parts.push_back(Part{prism, "prism"});
+  std::vector<Witness> found;
+  ASSERT_NO_THROW(found = witnesses(parts));
+  ASSERT_EQ(found.size(), 1U);
+  EXPECT_EQ(found[0].point, glm::dvec3(4, 2, 1.5));
+  EXPECT_DOUBLE_EQ(found[0].depth_mm, 1.5);
+  std::vector<Witness> outside{found[0]};
+  ASSERT_NO_THROW(outside = witnesses_outside(prism, found, 0.0));
+  EXPECT_TRUE(outside.empty());
 }
 
 TEST(Containment, NamesThePartsAUnionLeftOut) {

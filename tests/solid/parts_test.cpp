@@ -233,8 +233,34 @@ TEST(Parts, UnitesAFanOfCoplanarTrianglesIntoOnePlate) {
             std::string::npos)
       << parts.parts[0].label;
   expect_printable(parts.parts[0].mesh);
+  // The outline's points move onto a grid of 2^-20 mm: at most half a cell
+  // along its 25 mm, through the plate's thickness.
   EXPECT_NEAR(signed_volume(parts.parts[0].mesh),
-              area * plate_thickness_mm(0.8, 0.05), 1e-9);
+              area * plate_thickness_mm(0.8, 0.05), 1e-5);
+}
+
+TEST(Parts, TakesALeafDrawnTwiceAFewUlpsApartAsOnePlate) {
+  // Leaves 12 and 28 of the blog's tree A at n = 6, in millimetres: the
+  // same hexagon drawn twice, two coordinates apart by an ulp. United
+  // exactly, they made a plate that cut itself and the union refused.
+  lsys::Skeleton s;
+  s.polygons = {
+      polygon({{-33.934294610295574, 0, 51.49246862589401},
+               {-36.12924707365708, -2.354959764329187, 52.56106799859591},
+               {-38.276448411446964, -4.953370368335126, 52.18245846973024},
+               {-39.97354653363441, -7.308330132664312, 50.42758556851389},
+               {-37.778594070272895, -4.953370368335126, 49.358986195811994},
+               {-35.63139273248302, -2.3549597643291875, 49.73759572467767}}),
+      polygon({{-33.934294610295574, 0, 51.492468625894006},
+               {-36.12924707365708, -2.354959764329187, 52.5610679985959},
+               {-38.276448411446964, -4.953370368335126, 52.182458469730236},
+               {-39.97354653363441, -7.308330132664312, 50.427585568513884},
+               {-37.778594070272895, -4.953370368335126, 49.358986195811994},
+               {-35.63139273248302, -2.3549597643291875, 49.73759572467766}})};
+  const PartSet parts = build_parts(s, {.wall_mm = 0.8});
+  ASSERT_EQ(parts.plates, 1U);
+  ASSERT_EQ(parts.parts.size(), 1U);
+  expect_printable(parts.parts[0].mesh);
 }
 
 TEST(Parts, UnitesOverlappingCoplanarPolygonsAndKeepsApartTheRest) {

@@ -12,6 +12,7 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -20,6 +21,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <unordered_map>
+#include <vector>
 
 #include "conversion.hpp"
 #include "lsolid/containment.hpp"
@@ -39,23 +41,43 @@ constexpr std::size_t kFacesPerWitness = 64;
 
 glm::dvec3 to_glm(const Point& p) { return {p.x(), p.y(), p.z()}; }
 
+// The faces that span an area. CGAL refuses (as a precondition) to shoot a
+// ray at a degenerate triangle, and a part or a decimated union may hold
+// a few (parts of the blog's trees at full size); having no area, they
+// stop no ray and change no side.
+std::vector<Mesh::Face_index> faces_with_area(const Mesh& mesh) {
+  std::vector<Mesh::Face_index> out;
+  out.reserve(mesh.number_of_faces());
+  for (const Mesh::Face_index f : mesh.faces()) {
+    if (!CGAL::Polygon_mesh_processing::is_degenerate_triangle_face(f, mesh))
+      out.push_back(f);
+  }
+  return out;
+}
+
 void add_witnesses(const Part& part, std::size_t index,
                    std::vector<Witness>& out) {
   const Mesh mesh = to_surface_mesh<Mesh>(part.mesh);
   if (mesh.number_of_faces() == 0) return;
-  Tree tree(faces(mesh).first, faces(mesh).second, mesh);
+  const std::vector<Mesh::Face_index> solid_faces = faces_with_area(mesh);
+  Tree tree(solid_faces.begin(), solid_faces.end(), mesh);
   tree.accelerate_distance_queries();
   std::size_t k = 0;
-  for (const Mesh::Face_index f : mesh.faces()) {
+  for (const Mesh::Face_index f : solid_faces) {
     if (k++ % kFacesPerWitness != 0) continue;
     const auto h = mesh.halfedge(f);
     const Point& a = mesh.point(mesh.source(h));
     const Point& b = mesh.point(mesh.target(h));
     const Point& c = mesh.point(mesh.target(mesh.next(h)));
     const Kernel::Vector_3 normal = CGAL::cross_product(b - a, c - a);
-    if (normal.squared_length() == 0.0) continue;
+    const double length = std::sqrt(normal.squared_length());
+    if (!(length > 0.0) || !std::isfinite(length)) continue;
     const Point centre = CGAL::centroid(a, b, c);
-    const Kernel::Ray_3 inward(centre, -normal);
+    // A unit direction: the normal of a sliver can be so short that the
+    // ray's second point rounds back onto its first (the blog's trees at
+    // full size), and CGAL refuses a degenerate ray.
+    const Kernel::Ray_3 inward(centre, -normal / length);
+    if (inward.is_degenerate()) continue;
     const auto hit = tree.first_intersection(
         inward, [f](const Mesh::Face_index g) { return g == f; });
     if (!hit) continue;
@@ -95,7 +117,14 @@ std::vector<Witness> witnesses_outside(const TriangleMesh& mesh,
     throw GeometryError(
         "cannot test points against a mesh that is not a 2-manifold");
   }
-  Tree tree(faces(solid).first, faces(solid).second, solid);
+  const std::vector<Mesh::Face_index> solid_faces = faces_with_area(solid);
+  if (solid_faces.empty()) {
+    for (const Witness& w : witnesses) {
+      if (w.depth_mm >= min_depth_mm) outside.push_back(w);
+    }
+    return outside;
+  }
+  Tree tree(solid_faces.begin(), solid_faces.end(), solid);
   const CGAL::Side_of_triangle_mesh<Mesh, Kernel> side(tree);
   for (const Witness& w : witnesses) {
     if (w.depth_mm < min_depth_mm) continue;

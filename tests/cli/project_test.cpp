@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -92,18 +93,52 @@ TEST(Project, CgalIsIncludedOnlyInItsFolderUnderOnePolicy) {
   EXPECT_NE(cmake.find("CGAL_NO_ASSERTIONS"), std::string::npos);
 }
 
-TEST(Project, NoCommentOrDocumentCitesTheSharedFolder) {
-  for (const auto& file : sources()) {
-    const std::string text = testing::read_text(kSource / file);
-    EXPECT_EQ(text.find("shared/reference"), std::string::npos) << file;
-    EXPECT_EQ(text.find("shared/seeds"), std::string::npos) << file;
+// The names of Markdown documents in `text` (`docs/design.md`, `README.md`).
+std::vector<std::string> documents_named(const std::string& text) {
+  static const std::regex kDocument(R"([A-Za-z0-9_./-]+\.md\b)");
+  std::vector<std::string> out;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), kDocument);
+       it != std::sregex_iterator(); ++it) {
+    out.push_back(it->str());
   }
+  return out;
+}
+
+// A document is in the repository if it is there relative to the file that
+// names it, to the root, or to docs/, and lies under the root.
+bool in_repository(const std::filesystem::path& named_in,
+                   const std::string& document) {
+  const std::filesystem::path root = std::filesystem::weakly_canonical(kSource);
+  for (const std::filesystem::path& base :
+       {named_in.parent_path(), kSource, kSource / "docs"}) {
+    const std::filesystem::path p =
+        std::filesystem::weakly_canonical(base / document);
+    const std::string relative = std::filesystem::relative(p, root).string();
+    if (!relative.starts_with("..") && std::filesystem::exists(p)) return true;
+  }
+  return false;
+}
+
+TEST(Project, EveryDocumentACommentOrDocNamesIsInTheRepository) {
+  // The repository speaks for itself: a comment or a page that cites a
+  // document a clone does not have cites nothing.
+  std::vector<std::filesystem::path> files;
+  for (const auto& file : sources()) files.push_back(kSource / file);
+  files.push_back(kSource / "README.md");
   for (const auto& entry :
        std::filesystem::recursive_directory_iterator(kSource / "docs")) {
-    if (entry.path().extension() != ".md") continue;
-    const std::string text = testing::read_text(entry.path());
-    EXPECT_EQ(text.find("shared/"), std::string::npos) << entry.path();
+    if (entry.path().extension() == ".md") files.push_back(entry.path());
   }
+  std::size_t named = 0;
+  for (const auto& file : files) {
+    for (const std::string& document :
+         documents_named(testing::read_text(file))) {
+      ++named;
+      EXPECT_TRUE(in_repository(file, document))
+          << file << " names " << document;
+    }
+  }
+  EXPECT_GT(named, 10U);
 }
 
 }  // namespace

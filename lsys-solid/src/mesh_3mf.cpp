@@ -10,9 +10,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <bit>
+#include <boost/uuid/name_generator_sha1.hpp>
+#include <boost/uuid/uuid_io.hpp>
 #include <charconv>
 #include <map>
+#include <string_view>
 #include <utility>
 
 #include "lsolid/errors.hpp"
@@ -71,45 +73,19 @@ int color_of_name(const std::string& name) {
 
 // lib3mf gives the object, the build and its item random UUIDs (3MF's
 // production extension), so two runs wrote different files. These are
-// derived from the mesh instead (FNV-1a over its coordinates and
-// triangles, and the role), formatted as RFC 9562's version 8, the custom
-// kind: the same mesh gives the same bytes, and different meshes different
-// UUIDs.
-std::uint64_t digest(const TriangleMesh& mesh) {
-  std::uint64_t h = 0xcbf29ce484222325ULL;
-  const auto mix = [&](std::uint64_t v) {
-    for (int k = 0; k < 8; ++k) {
-      h = (h ^ ((v >> (8 * k)) & 0xFFU)) * 0x100000001b3ULL;
-    }
+// name-based UUIDs (RFC 4122 version 5, Boost.Uuid) of the role and the
+// mesh's coordinates and triangles: the same mesh gives the same bytes,
+// and different meshes different UUIDs.
+std::string stable_uuid(const TriangleMesh& mesh, std::string_view role) {
+  std::string name(role);
+  const auto append = [&](const auto& values) {
+    name.append(reinterpret_cast<const char*>(values.data()),
+                values.size() * sizeof(values[0]));
   };
-  for (const glm::dvec3& p : mesh.vertices) {
-    mix(std::bit_cast<std::uint64_t>(p.x));
-    mix(std::bit_cast<std::uint64_t>(p.y));
-    mix(std::bit_cast<std::uint64_t>(p.z));
-  }
-  for (const auto& t : mesh.triangles) {
-    mix((std::uint64_t{t[0]} << 32U) | t[1]);
-    mix(t[2]);
-  }
-  return h;
-}
-
-// SplitMix64's finaliser: every input bit reaches every output bit.
-std::uint64_t mixed(std::uint64_t z) {
-  z = (z ^ (z >> 30U)) * 0xBF58476D1CE4E5B9ULL;
-  z = (z ^ (z >> 27U)) * 0x94D049BB133111EBULL;
-  return z ^ (z >> 31U);
-}
-
-std::string stable_uuid(std::uint64_t digest, std::uint64_t role) {
-  const std::uint64_t high = mixed(digest + 2 * role);
-  const std::uint64_t low = mixed(digest + 2 * role + 1);
-  // Version 8 in the high half's 13th hex digit, variant 10 in the low's.
-  const std::uint64_t versioned = (high & ~0xF000ULL) | 0x8000ULL;
-  const std::uint64_t varied = (low & ~(3ULL << 62U)) | (2ULL << 62U);
-  return fmt::format("{:08x}-{:04x}-{:04x}-{:04x}-{:012x}", versioned >> 32U,
-                     (versioned >> 16U) & 0xFFFFU, versioned & 0xFFFFU,
-                     varied >> 48U, varied & 0xFFFFFFFFFFFFULL);
+  append(mesh.vertices);
+  append(mesh.triangles);
+  const boost::uuids::name_generator_sha1 generate(boost::uuids::ns::oid());
+  return boost::uuids::to_string(generate(name));
 }
 
 // Adds one mesh object with per-triangle base materials; the caller
@@ -140,7 +116,7 @@ PLib3MFModelMeshObject* add_mesh(PLib3MFModel* model, const ColoredMesh& volume,
   check(lib3mf_object_setnameutf8(object, name.c_str()), object,
         "naming an object");
   check(lib3mf_object_setuuidutf8(object,
-                                  stable_uuid(digest(volume.mesh), 1).c_str()),
+                                  stable_uuid(volume.mesh, "object").c_str()),
         object, "setting the object's UUID");
   check(lib3mf_object_settype(object, MODELOBJECTTYPE_MODEL), object,
         "setting the object type");
@@ -331,12 +307,11 @@ std::string encode_3mf(const std::vector<ColoredMesh>& volumes,
   Handle item;
   check(lib3mf_model_addbuilditem(model.get(), mesh.get(), nullptr, item.out()),
         model.get(), "adding the build item");
-  const std::uint64_t model_digest = digest(all.mesh);
-  check(lib3mf_builditem_setuuidutf8(item.get(),
-                                     stable_uuid(model_digest, 2).c_str()),
+  check(lib3mf_builditem_setuuidutf8(
+            item.get(), stable_uuid(all.mesh, "build item").c_str()),
         item.get(), "setting the build item's UUID");
   check(lib3mf_model_setbuilduuidutf8(model.get(),
-                                      stable_uuid(model_digest, 3).c_str()),
+                                      stable_uuid(all.mesh, "build").c_str()),
         model.get(), "setting the build's UUID");
   if (volumes.size() > 1) {
     Handle attachment;

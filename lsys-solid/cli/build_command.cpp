@@ -53,7 +53,12 @@ void print_report(const SolidReport& r, bool united) {
     fmt::print("skipped: {} polygons without area or crossing themselves\n",
                r.skipped_polygons);
   }
-  if (united) {
+  if (united && r.flat_outlines > 0) {
+    fmt::print(
+        "union: in the plane (flat profile): {} outlines, {} rings; {} points "
+        "inside the parts found inside it\n",
+        r.flat_outlines, r.flat_rings, r.witnesses_checked);
+  } else if (united) {
     fmt::print(
         "union: {} booleans ({} rounded to doubles), {} joined without a "
         "boolean, {} retried, {} cavities filled; {} points inside the "
@@ -66,6 +71,12 @@ void print_report(const SolidReport& r, bool united) {
     fmt::print(
         "placement: planar, lying flat on round undersides; not cut flat, "
         "as the cut model would not be printable\n");
+  } else if (r.placement.lies_flat && r.flat_outlines > 0) {
+    fmt::print(
+        "placement: planar, lying flat; its outline extruded from {:.2f} mm "
+        "below the branches' centre plane (--profile round for round "
+        "tubes)\n",
+        r.placement.cut_depth_mm);
   } else if (r.placement.lies_flat) {
     fmt::print(
         "placement: planar, lying flat; underside cut flat {:.2f} mm below "
@@ -171,7 +182,8 @@ std::string json_report(const Solid& solid, const OverhangReport& over,
       "{{\"output\": {}, \"written\": {}, \"united\": {}, \"segments\": {}, "
       "\"leaves\": {}, \"tubes\": {}, \"junction_hulls\": {}, \"joints\": {}, "
       "\"leaf_plates\": {}, \"booleans\": {}, \"mm_per_unit\": {}, "
-      "\"base\": {}, \"lies_flat\": {}, \"underside_cut_mm\": {}, "
+      "\"base\": {}, \"lies_flat\": {}, \"profile\": {}, "
+      "\"underside_cut_mm\": {}, "
       "\"decimation\": {}, \"colors\": {}, \"volumes\": {}, "
       "\"triangles\": {}, "
       "\"volume_mm3\": {}, "
@@ -187,7 +199,9 @@ std::string json_report(const Solid& solid, const OverhangReport& over,
       p.has_base ? fmt::format("{{\"radius_mm\": {}, \"thickness_mm\": {}}}",
                                p.base_radius_mm, p.base_thickness_mm)
                  : std::string("null"),
-      p.lies_flat, p.cut_depth_mm,
+      p.lies_flat,
+      p.lies_flat ? (r.flat_outlines > 0 ? "\"flat\"" : "\"round\"") : "null",
+      p.cut_depth_mm,
       r.decimated
           ? fmt::format(
                 "{{\"triangles_before\": {}, \"triangles_after\": {}, "

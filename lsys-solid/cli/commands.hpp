@@ -74,10 +74,11 @@ struct PrintInput {
   std::optional<std::string> tolerance;
   std::optional<std::string> base;
   std::optional<std::string> colors;
+  std::optional<std::string> profile;
 };
 
-/// Registers --wall, --height, --size, --scale, --tolerance, --base and
-/// --colors.
+/// Registers --wall, --height, --size, --scale, --tolerance, --base,
+/// --colors and --profile.
 void add_print_options(CLI::App& command, PrintInput& input);
 
 /// The file's print settings overridden by the command line's.

@@ -92,6 +92,10 @@ void add_print_options(CLI::App& command, PrintInput& input) {
                      "the colour of each turtle colour index in .3mf and .obj, "
                      "e.g. '#7B4A2A #7B4A2A #8CC63F' (later indices take the "
                      "last; indices of one colour print as one material)");
+  command.add_option("--profile", input.profile,
+                     "a planar model lying flat: flat, its outline extruded "
+                     "(default); round, round tubes cut flat underneath "
+                     "(slower)");
 }
 
 PrintSettings print_settings(const lsys::Grammar& grammar,
@@ -109,10 +113,15 @@ PrintSettings print_settings(const lsys::Grammar& grammar,
   }
   if (input.base) given.base = parse_base(*input.base, "--base");
   if (input.colors) given.colors = parse_colors(*input.colors, "--colors");
+  if (input.profile) given.profile = parse_profile(*input.profile, "--profile");
   return resolve_print_settings(
-      grammar, given, input.height || input.size || input.scale,
-      input.wall.has_value(), input.tolerance.has_value(),
-      input.base.has_value(), input.colors.has_value());
+      grammar, {.settings = given,
+                .sets_size = input.height || input.size || input.scale,
+                .sets_wall = input.wall.has_value(),
+                .sets_tolerance = input.tolerance.has_value(),
+                .sets_base = input.base.has_value(),
+                .sets_colors = input.colors.has_value(),
+                .sets_profile = input.profile.has_value()});
 }
 
 std::uint64_t parse_whole_number(const std::string& text,

@@ -111,6 +111,10 @@ std::optional<SkeletonPlane> skeleton_plane(const lsys::Skeleton& skeleton,
           std::max(wall_mm / 2.0, skeleton.segments.empty() ? 0.0 : thinnest)};
 }
 
+glm::dvec3 on_bed(const Placement& placement, const glm::dvec3& p) {
+  return turned_to_z(placement.plane_normal, p) + placement.moved_by_mm;
+}
+
 Placement place_on_bed(std::vector<Part>& parts, Base base, double wall_mm,
                        double tolerance_mm,
                        const std::optional<SkeletonPlane>& plane) {
@@ -127,6 +131,7 @@ Placement place_on_bed(std::vector<Part>& parts, Base base, double wall_mm,
     const glm::dvec3 move(-(box.min.x + box.max.x) / 2.0,
                           -(box.min.y + box.max.y) / 2.0, -box.min.z);
     translate(parts, move);
+    placement.plane_normal = plane->normal;
     placement.moved_by_mm = move;
     placement.lies_flat = true;
     placement.cut_depth_mm = plane->thinnest_radius_mm / 2.0;

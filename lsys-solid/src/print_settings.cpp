@@ -38,6 +38,17 @@ Base parse_base(const std::string& text, const std::string& what) {
       .source_line = text});
 }
 
+Profile parse_profile(const std::string& text, const std::string& what) {
+  if (text == "flat") return Profile::Flat;
+  if (text == "round") return Profile::Round;
+  throw lsys::ParseError(lsys::Diagnostic{
+      .file = what,
+      .line = 1,
+      .column = 1,
+      .message = "profile must be flat or round, not '" + text + "'",
+      .source_line = text});
+}
+
 std::vector<Rgb> parse_colors(const std::string& text,
                               const std::string& what) {
   std::vector<Rgb> colors;
@@ -79,16 +90,12 @@ std::vector<Rgb> parse_colors(const std::string& text,
 }
 
 std::vector<std::string> print_setting_names() {
-  return {"wall", "height", "size", "scale", "tolerance", "base", "colors"};
+  return {"wall",      "height", "size",   "scale",
+          "tolerance", "base",   "colors", "profile"};
 }
 
 PrintSettings resolve_print_settings(const lsys::Grammar& grammar,
-                                     const PrintSettings& command_line,
-                                     bool command_line_sets_size,
-                                     bool command_line_sets_wall,
-                                     bool command_line_sets_tolerance,
-                                     bool command_line_sets_base,
-                                     bool command_line_sets_colors) {
+                                     const CommandLinePrint& command_line) {
   PrintSettings file;
   int sizes = 0;
   std::size_t second_size = 0;
@@ -99,9 +106,10 @@ PrintSettings resolve_print_settings(const lsys::Grammar& grammar,
                            "'" + s.key + "' is set twice");
     }
     seen.push_back(s.key);
-    if (s.key == "base") {
+    if (s.key == "base" || s.key == "profile") {
       try {
-        file.base = parse_base(s.value, s.key);
+        if (s.key == "base") file.base = parse_base(s.value, s.key);
+        if (s.key == "profile") file.profile = parse_profile(s.value, s.key);
       } catch (const lsys::ParseError& e) {
         throw lsys::error_at(*grammar.source, s.offset, e.diagnostic().message);
       }
@@ -128,20 +136,22 @@ PrintSettings resolve_print_settings(const lsys::Grammar& grammar,
       if (s.key == "scale") file.scale_mm_per_unit = mm;
     }
   }
-  if (sizes > 1 && !command_line_sets_size) {
+  const PrintSettings& given = command_line.settings;
+  if (sizes > 1 && !command_line.sets_size) {
     throw lsys::error_at(*grammar.source, second_size,
                          "give one of height, size and scale, not several");
   }
   PrintSettings out = file;
-  if (command_line_sets_size) {
-    out.height_mm = command_line.height_mm;
-    out.size_mm = command_line.size_mm;
-    out.scale_mm_per_unit = command_line.scale_mm_per_unit;
+  if (command_line.sets_size) {
+    out.height_mm = given.height_mm;
+    out.size_mm = given.size_mm;
+    out.scale_mm_per_unit = given.scale_mm_per_unit;
   }
-  if (command_line_sets_wall) out.wall_mm = command_line.wall_mm;
-  if (command_line_sets_tolerance) out.tolerance_mm = command_line.tolerance_mm;
-  if (command_line_sets_base) out.base = command_line.base;
-  if (command_line_sets_colors) out.colors = command_line.colors;
+  if (command_line.sets_wall) out.wall_mm = given.wall_mm;
+  if (command_line.sets_tolerance) out.tolerance_mm = given.tolerance_mm;
+  if (command_line.sets_base) out.base = given.base;
+  if (command_line.sets_colors) out.colors = given.colors;
+  if (command_line.sets_profile) out.profile = given.profile;
   return out;
 }
 

@@ -321,6 +321,28 @@ TEST_F(Build, RefusesAnUnknownBase) {
             "      ^\n");
 }
 
+TEST_F(Build, ChoosesTheProfileOfAFlatModelAndRefusesAnUnknownOne) {
+  use_printable("branches-90", "b.ls");
+  const auto r = run_command(lsolid() + " b.ls --profile square", dir_);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err,
+            "--profile:1:1: error: profile must be flat or round, not "
+            "'square'\nsquare\n^\n");
+  const auto flat = run_command(lsolid() + " b.ls --json -o f.stl", dir_);
+  EXPECT_EQ(flat.exit_code, 0) << flat.err;
+  EXPECT_NE(flat.out.find("\"profile\": \"flat\""), std::string::npos);
+  const auto round =
+      run_command(lsolid() + " b.ls --profile round -o r.stl", dir_);
+  EXPECT_EQ(round.exit_code, 0) << round.err;
+  EXPECT_NE(round.out.find("placement: planar, lying flat; underside cut"),
+            std::string::npos)
+      << round.out;
+  { std::ofstream(dir_ / "c.ls") << "profile: round\n\u03C9: F+F+F\n"; }
+  const auto file = run_command(lsolid() + " c.ls --json -o c.stl", dir_);
+  EXPECT_EQ(file.exit_code, 0) << file.err;
+  EXPECT_NE(file.out.find("\"profile\": \"round\""), std::string::npos);
+}
+
 TEST_F(Build, RefusesAModelThatDoesNotFitTheBedUnlessForced) {
   use_printable("hilbert-cube", "h.ls");  // 60 mm on each side
   const auto small = run_command(lsolid() + " h.ls --bed 50x50x50mm", dir_);

@@ -150,6 +150,44 @@ TEST(Solid, APlanarFigureLiesFlatOnAFlatUnderside) {
   EXPECT_GT(flat_mm2, 0.5 * 0.8 * 32 * (50.0 / 8.0) * 0.5);
 }
 
+TEST(Solid, APlanarFigureLyingFlatIsItsOutlineExtrudedUnlessRoundIsAsked) {
+  const lsys::Grammar koch = parse(
+      "n=1, \u03B4=90\u00B0\nwidth: 1\nF-F-F-F\nF \u2192 F-F+F+FF-F-F+F\n");
+  const Solid flat = build_solid(koch, {.print = {.size_mm = 50.0}});
+  const Solid round = build_solid(
+      koch, {.print = {.size_mm = 50.0, .profile = Profile::Round}});
+  expect_printable(flat.mesh, 1);
+  expect_printable(round.mesh, 1);
+  // 32 branches and a node at each of their 32 joins (the last branch
+  // meets the first), united in the plane, no boolean in 3D; the round
+  // profile needs booleans. One ring round the island, one round each hole.
+  EXPECT_EQ(flat.report.flat_outlines, 64U);
+  EXPECT_EQ(flat.report.flat_rings,
+            static_cast<std::size_t>(flat.report.validation.genus) + 1);
+  EXPECT_EQ(flat.report.union_stats.booleans, 0U);
+  EXPECT_EQ(round.report.flat_outlines, 0U);
+  EXPECT_GT(round.report.union_stats.booleans, 0U);
+  // A flat top: every vertex on the bed or at the one top height, the top
+  // of the round model's tubes (across their corners) above its cut.
+  const double top = flat.report.validation.bounds.max.z;
+  for (const glm::dvec3& p : flat.mesh.vertices) {
+    EXPECT_TRUE(p.z == 0.0 || p.z == top) << p.z;
+  }
+  const double radius = flat.report.mm_per_unit / 2.0;
+  EXPECT_NEAR(
+      top,
+      flat.report.placement.cut_depth_mm + tube_corner_radius(radius, 0.05),
+      1e-6);
+  EXPECT_LE(top, round.report.validation.bounds.max.z);
+  // The size asked for holds for what is printed.
+  const glm::dvec3 size = flat.report.validation.bounds.size();
+  EXPECT_NEAR(std::max(size.x, size.y), 50.0, 50.0 * 1e-4 + 1e-5);
+  // It holds the round model: more material, the same place.
+  EXPECT_GT(flat.report.validation.volume_mm3,
+            round.report.validation.volume_mm3);
+  EXPECT_GT(flat.report.witnesses_checked, 0U);
+}
+
 TEST(Solid, TellsItsProgressStageByStage) {
   std::vector<std::string> stages;
   double last_union = -1.0;
@@ -244,12 +282,11 @@ TEST(Solid, BuildsOneVolumePerColourThatDoNotOverlap) {
 
 TEST(Solid, ReadsColoursFromTheFileAndRefusesBadOnes) {
   const lsys::Grammar g = parse("colors: #7B4A2A, #8cc63f\nF\n");
-  const PrintSettings s = resolve_print_settings(g, {}, false, false, false);
+  const PrintSettings s = resolve_print_settings(g);
   ASSERT_EQ(s.colors.size(), 2U);
   EXPECT_EQ(hex(s.colors[1]), "#8CC63F");
   try {
-    (void)resolve_print_settings(parse("colors: #7B4A2A #12345\nF\n"), {},
-                                 false, false, false);
+    (void)resolve_print_settings(parse("colors: #7B4A2A #12345\nF\n"));
     FAIL() << "no error";
   } catch (const lsys::ParseError& e) {
     EXPECT_EQ(e.diagnostic().line, 1);
@@ -261,17 +298,19 @@ TEST(Solid, ReadsColoursFromTheFileAndRefusesBadOnes) {
 
 TEST(Solid, ReadsPrintSettingsFromTheFileUnlessTheCommandLineGivesThem) {
   const lsys::Grammar g = parse("wall: 1.5mm\nheight: 4cm\n\u03C9: F\n");
-  const PrintSettings file = resolve_print_settings(g, {}, false, false, false);
+  const PrintSettings file = resolve_print_settings(g);
   EXPECT_EQ(file.wall_mm, 1.5);
   EXPECT_EQ(file.height_mm, 40.0);
-  const PrintSettings cli = resolve_print_settings(
-      g, {.wall_mm = 0.4, .size_mm = 10.0}, true, true, false);
+  const PrintSettings cli =
+      resolve_print_settings(g, {.settings = {.wall_mm = 0.4, .size_mm = 10.0},
+                                 .sets_size = true,
+                                 .sets_wall = true});
   EXPECT_EQ(cli.wall_mm, 0.4);
   EXPECT_FALSE(cli.height_mm.has_value());
   EXPECT_EQ(cli.size_mm, 10.0);
   const lsys::Grammar bad = parse("wall: 2 furlongs\n\u03C9: F\n");
   try {
-    (void)resolve_print_settings(bad, {}, false, false, false);
+    (void)resolve_print_settings(bad);
     FAIL() << "no error";
   } catch (const lsys::ParseError& e) {
     EXPECT_EQ(e.diagnostic().line, 1);

@@ -15,7 +15,10 @@ namespace lsolid {
 
 /// How the model was put on the bed.
 struct Placement {
-  glm::dvec3 moved_by_mm{0.0};  ///< the translation applied to every part
+  /// The direction turned to +Z before moving: a planar skeleton's normal
+  /// when it lies flat, otherwise +Z (no turn).
+  glm::dvec3 plane_normal{0.0, 0.0, 1.0};
+  glm::dvec3 moved_by_mm{0.0};  ///< the translation applied after the turn
   bool has_base = false;        ///< a disc was added under the model
   double base_radius_mm = 0.0;
   double base_thickness_mm = 0.0;
@@ -32,6 +35,11 @@ struct Placement {
   /// left whole, lying on its round undersides (`cut_z_mm` is then 0).
   bool cut_refused = false;
 };
+
+/// Where the placement puts a point of the millimetre skeleton: turned, then
+/// moved as the parts were.
+[[nodiscard]] glm::dvec3 on_bed(const Placement& placement,
+                                const glm::dvec3& p);
 
 /// The plane a planar skeleton is drawn in, in millimetres.
 struct SkeletonPlane {

@@ -18,6 +18,15 @@ enum class Base {
   None,  ///< never
 };
 
+/// The section of a planar model's branches once it lies flat.
+enum class Profile {
+  /// The footprint of every branch and leaf, united in the plane and
+  /// extruded: a flat top and square edges, as high as the round model.
+  Flat,
+  /// Round tubes united in 3D and cut flat underneath (far slower).
+  Round,
+};
+
 /// How to print: sizes in millimetres. At most one of height, size and
 /// scale is set; with none, the longest side becomes 100 mm.
 struct PrintSettings {
@@ -27,6 +36,7 @@ struct PrintSettings {
   std::optional<double> scale_mm_per_unit;  ///< millimetres per model unit
   double tolerance_mm = 0.05;  ///< chord error of tube cross-sections
   Base base = Base::Auto;
+  Profile profile = Profile::Flat;  ///< of a model that lies flat
   /// The colour of each turtle colour index for 3MF and OBJ (`colors:
   /// #7B4A2A #8CC63F`); empty: lsolid's palette (see palette_color).
   std::vector<Rgb> colors;
@@ -35,6 +45,11 @@ struct PrintSettings {
 /// `auto`, `disc` or `none`.
 /// @throws lsys::ParseError naming `what` for anything else.
 [[nodiscard]] Base parse_base(const std::string& text, const std::string& what);
+
+/// `flat` or `round`.
+/// @throws lsys::ParseError naming `what` for anything else.
+[[nodiscard]] Profile parse_profile(const std::string& text,
+                                    const std::string& what);
 
 /// `#RRGGBB` colours separated by spaces or commas.
 /// @throws lsys::ParseError naming `what`, with the column of a bad colour.
@@ -45,13 +60,21 @@ struct PrintSettings {
 /// to pass as lsys::ParseOptions::extra_settings.
 [[nodiscard]] std::vector<std::string> print_setting_names();
 
+/// Print settings given on the command line, and which of them it gives.
+struct CommandLinePrint {
+  PrintSettings settings;
+  bool sets_size = false;  ///< height, size or scale
+  bool sets_wall = false;
+  bool sets_tolerance = false;
+  bool sets_base = false;
+  bool sets_colors = false;
+  bool sets_profile = false;
+};
+
 /// The print settings a file states, then those of the command line, which
 /// win: a size given on the command line replaces every size of the file.
-/// @throws lsys::ParseError at the file's value for a bad length.
+/// @throws lsys::ParseError at the file's value for a bad setting.
 [[nodiscard]] PrintSettings resolve_print_settings(
-    const lsys::Grammar& grammar, const PrintSettings& command_line,
-    bool command_line_sets_size, bool command_line_sets_wall,
-    bool command_line_sets_tolerance, bool command_line_sets_base = false,
-    bool command_line_sets_colors = false);
+    const lsys::Grammar& grammar, const CommandLinePrint& command_line = {});
 
 }  // namespace lsolid

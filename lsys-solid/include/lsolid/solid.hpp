@@ -72,6 +72,12 @@ struct SolidReport {
   std::size_t skipped_polygons = 0;
   lsys::Skeleton dropped;  ///< only the counts of what the turtle dropped
   double mm_per_unit = 1.0;
+  /// A planar model lying flat built as its footprint extruded
+  /// (Profile::Flat), with no 3D union (`union_stats` all zero): the
+  /// outlines united in the plane and the rings of their union. Both 0
+  /// otherwise.
+  std::size_t flat_outlines = 0;
+  std::size_t flat_rings = 0;
   UnionStats union_stats;
   std::size_t cavities_filled = 0;  ///< sealed voids the union left
   RoundingStats rounding;

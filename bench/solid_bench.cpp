@@ -94,6 +94,51 @@ BENCHMARK_CAPTURE(build, bush_n5_multi_material, "abop-1.25-bush.ls", 5, true)
     ->Unit(benchmark::kSecond)
     ->Iterations(1);
 
+// Small inputs that were pathological (the speed issue's list): a build
+// from the grammar's text.
+void build_text(benchmark::State& state, const std::string& text) {
+  const lsys::Grammar grammar = lsys::parse_grammar_text(
+      text, {.extra_settings = lsolid::print_setting_names()}, "bench.ls");
+  lsolid::SolidReport report;
+  for (auto _ : state) {
+    report = lsolid::build_solid(grammar).report;
+    if (!report.validation.is_printable()) state.SkipWithError("not printable");
+  }
+  state.counters["segments"] = static_cast<double>(report.segments);
+  state.counters["booleans"] = static_cast<double>(report.union_stats.booleans);
+  state.counters["union_s"] = report.seconds.unite;
+  state.counters["rounding_s"] = report.seconds.round;
+  state.counters["decimate_s"] = report.seconds.decimate;
+}
+
+// The 3D Hilbert curve of printables/hilbert-cube.ls at n = 4, its tubes as
+// wide as their spacing, so that each touches its neighbours.
+BENCHMARK_CAPTURE(build_text, hilbert_n4_touching,
+                  "n=4, \u03B4=90\u00B0\nwidth: 1\nA\n"
+                  "A \u2192 B-F+CFC+F-D&F^D-F+&&CFC+F+B//\n"
+                  "B \u2192 A&F^CFB^F^D^^-F-D^|F^B|FC^F^A//\n"
+                  "C \u2192 |D^|F^B-F+C^F^A&&FA&F^C+F+B^F^D//\n"
+                  "D \u2192 |CFB-F+B|FA&F^A&&FB-F+B|FC//\n")
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
+// 36 branches leaving one node.
+BENCHMARK_CAPTURE(build_text, one_node_36_branches,
+                  "n=36\n\u03C9: FA\nA \u2192 [&(60)F]/(10)A\n")
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
+// Three coincident branches.
+BENCHMARK_CAPTURE(build_text, coincident_branches, "\u03C9: F[F][F]F\n")
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
+// ABOP fig. 1.24b at its full n, which lies flat (the flat profile).
+BENCHMARK_CAPTURE(build, abop_1_24b_flat, "abop-1.24b.ls", 5)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
+BENCHMARK_CAPTURE(build, plant_1_26_multi_material, "abop-1.26-plant.ls", 5,
+                  true)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
+
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -408,7 +408,7 @@ Decimated decimate_once(const TriangleMesh& input,
       options.progress(std::min(1.0, double(done + collapses) / expected));
     }
   };
-  SurfaceDistance input_surface(input);
+  SurfaceDistance input_surface(input, options.tolerance_mm);
   done = run(mesh, input_surface, options, aim, true,
              options.max_triangles.value_or(0), guarded, tell);
   std::size_t faces = input.triangles.size() - 2 * done;
@@ -441,7 +441,7 @@ Decimated decimate_once(const TriangleMesh& input,
     box.min = glm::min(box.min, other.min);
     box.max = glm::max(box.max, other.max);
     const double limit_mm = 2.0 * glm::length(box.size()) + 1.0;
-    SurfaceDistance output_surface(out.mesh);
+    SurfaceDistance output_surface(out.mesh, options.tolerance_mm);
     stats.max_deviation_mm =
         std::max(sampled_distance(input, output_surface, limit_mm,
                                   triangle_set(out.mesh)),

@@ -510,7 +510,8 @@ void extrude_and_finish(const FlatModel& flat, const std::vector<Part>& parts,
   if (!outside.empty()) {
     throw GeometryError(
         "the footprint lost part of the model (a bug in lsolid; please "
-        "report it with this file): " +
+        "report it with this file; --profile round builds it as round "
+        "tubes): " +
         lost_parts(outside, kept));
   }
   report.seconds.round = clock.lap();

@@ -146,31 +146,42 @@ class GuardedDecimater : public OpenMesh::Decimater::BaseDecimaterT<Mesh> {
       fresh[count++] = corner;
     }
     const double squared = tolerance_mm * tolerance_mm;
+    const auto near_fresh = [&](const glm::dvec3& p) {
+      for (std::size_t t = 0; t < count; ++t) {
+        const glm::dvec3 d = closest_point_on_triangle(
+                                 p, fresh[t][0], fresh[t][1], fresh[t][2]) -
+                             p;
+        if (glm::dot(d, d) <= squared) return true;
+      }
+      return false;
+    };
     for (const auto f : mesh_.vf_range(ci.v0)) {
       corners(f, false);
-      const double longest = std::max({glm::distance(corner[0], corner[1]),
-                                       glm::distance(corner[1], corner[2]),
-                                       glm::distance(corner[2], corner[0])});
-      const int steps = static_cast<int>(
-          std::clamp(longest / (4.0 * tolerance_mm), 2.0, 8.0));
-      for (int i = 0; i <= steps; ++i) {
-        for (int j = 0; i + j <= steps; ++j) {
-          if (i == steps || j == steps || i + j == 0) continue;  // corners
-          const glm::dvec3 p = corner[0] +
-                               (corner[1] - corner[0]) * (double(i) / steps) +
-                               (corner[2] - corner[0]) * (double(j) / steps);
-          bool near = false;
-          for (std::size_t t = 0; t < count && !near; ++t) {
-            const glm::dvec3 d = closest_point_on_triangle(
-                                     p, fresh[t][0], fresh[t][1], fresh[t][2]) -
-                                 p;
-            near = glm::dot(d, d) <= squared;
-          }
-          if (!near) return true;
-        }
-      }
+      if (!all_samples(corner, tolerance_mm, near_fresh)) return true;
     }
     return false;
+  }
+
+  // Whether `keep` holds at points sampled on the triangle, its corners
+  // left out: a grid of about four tolerances' spacing, 2 to 8 steps a side.
+  template <typename Keep>
+  static bool all_samples(const std::array<glm::dvec3, 3>& corner,
+                          double tolerance_mm, Keep keep) {
+    const double longest = std::max({glm::distance(corner[0], corner[1]),
+                                     glm::distance(corner[1], corner[2]),
+                                     glm::distance(corner[2], corner[0])});
+    const int steps =
+        static_cast<int>(std::clamp(longest / (4.0 * tolerance_mm), 2.0, 8.0));
+    for (int i = 0; i <= steps; ++i) {
+      for (int j = 0; i + j <= steps; ++j) {
+        if (i == steps || j == steps || i + j == 0) continue;  // corners
+        const glm::dvec3 p = corner[0] +
+                             (corner[1] - corner[0]) * (double(i) / steps) +
+                             (corner[2] - corner[0]) * (double(j) / steps);
+        if (!keep(p)) return false;
+      }
+    }
+    return true;
   }
 
   // True when a point sampled on a new triangle lies farther than the
@@ -187,20 +198,10 @@ class GuardedDecimater : public OpenMesh::Decimater::BaseDecimaterT<Mesh> {
         const Mesh::Point& p = v == ci.v0 ? ci.p1 : mesh_.point(v);
         corner[k++] = {p[0], p[1], p[2]};
       }
-      const double longest = std::max({glm::distance(corner[0], corner[1]),
-                                       glm::distance(corner[1], corner[2]),
-                                       glm::distance(corner[2], corner[0])});
-      const int steps = static_cast<int>(
-          std::clamp(longest / (4.0 * tolerance_mm), 2.0, 8.0));
-      for (int i = 0; i <= steps; ++i) {
-        for (int j = 0; i + j <= steps; ++j) {
-          if (i == steps || j == steps || i + j == 0) continue;  // corners
-          const double u = double(i) / steps;
-          const double w = double(j) / steps;
-          const glm::dvec3 p = corner[0] + (corner[1] - corner[0]) * u +
-                               (corner[2] - corner[0]) * w;
-          if (!input.within(p, tolerance_mm)) return true;
-        }
+      if (!all_samples(corner, tolerance_mm, [&](const glm::dvec3& p) {
+            return input.within(p, tolerance_mm);
+          })) {
+        return true;
       }
     }
     return false;

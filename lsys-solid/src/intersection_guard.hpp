@@ -56,6 +56,8 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
     large_.clear();
     seen_.assign(m.n_faces(), 0);
     changing_.assign(m.n_faces(), 0);
+    box_lo_.assign(m.n_faces(), glm::dvec3(0.0));
+    box_hi_.assign(m.n_faces(), glm::dvec3(0.0));
     for (const auto f : m.faces()) insert(f);
   }
 
@@ -113,10 +115,11 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
           if (changing_[index] == collapse_stamp_ || m.status(g).deleted()) {
             continue;
           }
-          const IndexedTriangle other = triangle(g);
-          const auto [other_lo, other_hi] = box(other);
-          if (overlap(lo, hi, other_lo, other_hi) &&
-              triangles_intersect(t, other)) {
+          // The box kept since the face last changed rejects most
+          // candidates without walking the mesh for their corners.
+          const auto i = static_cast<std::size_t>(index);
+          if (overlap(lo, hi, box_lo_[i], box_hi_[i]) &&
+              triangles_intersect(t, triangle(g))) {
             hit = true;
           }
         }
@@ -175,6 +178,8 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
   void insert(typename MeshT::FaceHandle f) {
     const IndexedTriangle t = triangle(f);
     const auto [lo, hi] = box(t);
+    box_lo_[static_cast<std::size_t>(f.idx())] = lo;
+    box_hi_[static_cast<std::size_t>(f.idx())] = hi;
     const auto add = [&](Cell key) {
       std::vector<int>& cell = cells_[key];
       if (cell.empty() || cell.back() != f.idx()) cell.push_back(f.idx());
@@ -215,6 +220,8 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
   std::vector<int> large_;
   std::vector<std::uint32_t> seen_;      // per face: last query
   std::vector<std::uint32_t> changing_;  // per face: last collapse tested
+  std::vector<glm::dvec3> box_lo_;       // per face: its box when inserted
+  std::vector<glm::dvec3> box_hi_;
   std::uint32_t query_stamp_ = 0;
   std::uint32_t collapse_stamp_ = 0;
   std::vector<IndexedTriangle> fresh_;

@@ -130,6 +130,23 @@ BENCHMARK_CAPTURE(build_text, one_node_36_branches,
 BENCHMARK_CAPTURE(build_text, coincident_branches, "\u03C9: F[F][F]F\n")
     ->Unit(benchmark::kSecond)
     ->Iterations(1);
+// ABOP fig. 5.5's cordate leaf drawn as a fan of 22 coplanar triangles.
+BENCHMARK_CAPTURE(build_text, cordate_fan_leaf,
+                  "delta=10\nwidth: 0.5\nderivation length: 12\nbase: none\n"
+                  "axiom: !(0.05)F(0.1)\\(30)&(30)FFFFF!(0.045)[A][B]\n"
+                  "p1: A -> [[+A{.C.]GC.}]\np2: B -> [[-B{.C.]GC.}]\n"
+                  "p3: C -> GC\n")
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
+// Lparser's cordate leaf: four leaves of 14 overlapping coplanar polygons.
+BENCHMARK_CAPTURE(
+    build_text, lparser_cordate_leaf,
+    "n = 10\nangle: 10\nwidth: 0.1\nbase: none\n"
+    "[|FFFFFFFFFFF]P>(90)P>(90)P>(90)P\nP=[&(10)G[ccA][ccB][a][b]]\n"
+    "G=tFtFtFtFtFtFtFtFtFtFtFtFtF\nA=[+A{.].C.}\nB=[-B{.].C.}\nC=tfC\n"
+    "a=[+a]d\nb=[-b]d\nd=tFd\naliases: > = /  < = \\  c = '\n")
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
 // ABOP fig. 1.24b at its full n, which lies flat (the flat profile).
 BENCHMARK_CAPTURE(build, abop_1_24b_flat, "abop-1.24b.ls", 5)
     ->Unit(benchmark::kSecond)

@@ -95,10 +95,16 @@ class GuardedDecimater : public OpenMesh::Decimater::BaseDecimaterT<Mesh> {
         enqueue(v);
         continue;
       }
-      if ((hausdorff != nullptr && hausdorff->collapse_priority(ci) < 0.0F) ||
-          (hausdorff != nullptr && cuts_off(ci, tolerance_mm)) ||
-          (input != nullptr && strays(ci, *input, tolerance_mm)) ||
-          (guard != nullptr && guard->would_intersect(ci))) {
+      const auto refused = [&] {
+        if (hausdorff != nullptr && hausdorff->collapse_priority(ci) < 0.0F) {
+          return true;
+        }
+        take_new_triangles(ci);
+        return (hausdorff != nullptr && cuts_off(ci, tolerance_mm)) ||
+               (input != nullptr && strays(*input, tolerance_mm)) ||
+               (guard != nullptr && guard->would_intersect(ci));
+      };
+      if (refused()) {
         mesh_.property(refused_, ci.v0v1) = true;
         enqueue(v);
         continue;
@@ -125,42 +131,45 @@ class GuardedDecimater : public OpenMesh::Decimater::BaseDecimaterT<Mesh> {
   }
 
  private:
+  using Corners = std::array<glm::dvec3, 3>;
+
+  // The corners of face f, with v0 moved to p1 if `moved`.
+  Corners corners(const CollapseInfo& ci, Mesh::FaceHandle f, bool moved) {
+    Corners corner{};
+    std::size_t k = 0;
+    for (const auto v : mesh_.fv_range(f)) {
+      const Mesh::Point& p = moved && v == ci.v0 ? ci.p1 : mesh_.point(v);
+      corner[k++] = {p[0], p[1], p[2]};
+    }
+    return corner;
+  }
+
+  // The triangles the collapse leaves where v0's were, into new_.
+  void take_new_triangles(const CollapseInfo& ci) {
+    new_.clear();
+    for (const auto f : mesh_.vf_range(ci.v0)) {
+      if (f != ci.fl && f != ci.fr) new_.push_back(corners(ci, f, true));
+    }
+  }
+
   // True when a point sampled on a triangle the collapse removes or moves
   // lies farther than the tolerance from every new triangle: the surface
   // given up is not near the one that replaces it. ModHausdorffT measures
   // only at the removed vertices; along a concave crease the edges between
   // them lie deeper (ABOP fig. 2.2c: an input point 0.051 mm from the
   // result for 0.05 mm, whatever the vetoes aimed at, in all three runs).
+  // @pre take_new_triangles(ci) was called.
   bool cuts_off(const CollapseInfo& ci, double tolerance_mm) {
-    std::array<std::array<glm::dvec3, 3>, 32> fresh{};
-    std::size_t count = 0;
-    std::array<glm::dvec3, 3> corner{};
-    const auto corners = [&](Mesh::FaceHandle f, bool moved) {
-      int k = 0;
-      for (const auto v : mesh_.fv_range(f)) {
-        const Mesh::Point& p = moved && v == ci.v0 ? ci.p1 : mesh_.point(v);
-        corner[static_cast<std::size_t>(k++)] = {p[0], p[1], p[2]};
-      }
-    };
-    for (const auto f : mesh_.vf_range(ci.v0)) {
-      if (f == ci.fl || f == ci.fr) continue;
-      if (count == fresh.size()) return false;  // a star too large to test
-      corners(f, true);
-      fresh[count++] = corner;
-    }
     const double squared = tolerance_mm * tolerance_mm;
-    const auto near_fresh = [&](const glm::dvec3& p) {
-      for (std::size_t t = 0; t < count; ++t) {
-        const glm::dvec3 d = closest_point_on_triangle(
-                                 p, fresh[t][0], fresh[t][1], fresh[t][2]) -
-                             p;
+    const auto near_new = [&](const glm::dvec3& p) {
+      for (const Corners& t : new_) {
+        const glm::dvec3 d = closest_point_on_triangle(p, t[0], t[1], t[2]) - p;
         if (glm::dot(d, d) <= squared) return true;
       }
       return false;
     };
     for (const auto f : mesh_.vf_range(ci.v0)) {
-      corners(f, false);
-      if (!all_samples(corner, near_fresh)) return true;
+      if (!all_samples(corners(ci, f, false), near_new)) return true;
     }
     return false;
   }
@@ -173,7 +182,7 @@ class GuardedDecimater : public OpenMesh::Decimater::BaseDecimaterT<Mesh> {
   // n = 7 bulged 0.071 mm from the input between samples, and the whole
   // decimation ran again aiming lower.
   template <typename Keep>
-  static bool all_samples(const std::array<glm::dvec3, 3>& corner, Keep keep) {
+  static bool all_samples(const Corners& corner, Keep keep) {
     const double longest = std::max({glm::distance(corner[0], corner[1]),
                                      glm::distance(corner[1], corner[2]),
                                      glm::distance(corner[2], corner[0])});
@@ -195,17 +204,10 @@ class GuardedDecimater : public OpenMesh::Decimater::BaseDecimaterT<Mesh> {
   // tolerance from the input surface. ModHausdorffT measures only at the
   // removed vertices; a long new triangle can still bridge a crease (0.10 mm
   // for 0.05 mm on the bush before this test).
-  bool strays(const CollapseInfo& ci, SurfaceDistance& input,
-              double tolerance_mm) {
-    for (const auto f : mesh_.vf_range(ci.v0)) {
-      if (f == ci.fl || f == ci.fr) continue;
-      std::array<glm::dvec3, 3> corner{};
-      int k = 0;
-      for (const auto v : mesh_.fv_range(f)) {
-        const Mesh::Point& p = v == ci.v0 ? ci.p1 : mesh_.point(v);
-        corner[k++] = {p[0], p[1], p[2]};
-      }
-      if (!all_samples(corner, [&](const glm::dvec3& p) {
+  // @pre take_new_triangles was called for the collapse.
+  bool strays(SurfaceDistance& input, double tolerance_mm) {
+    for (const Corners& t : new_) {
+      if (!all_samples(t, [&](const glm::dvec3& p) {
             return input.within(p, tolerance_mm);
           })) {
         return true;
@@ -240,6 +242,7 @@ class GuardedDecimater : public OpenMesh::Decimater::BaseDecimaterT<Mesh> {
   OpenMesh::HPropHandleT<bool> refused_;
   OpenMesh::VPropHandleT<std::uint32_t> version_;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue_;
+  std::vector<Corners> new_;  // the collapse being tested, v0 moved to p1
 };
 
 Mesh to_openmesh(const TriangleMesh& in) {

@@ -33,7 +33,6 @@ using ClipperLib::IntPoint;
 using ClipperLib::Path;
 using ClipperLib::Paths;
 
-constexpr double kCellsPerMm = 1048576.0;  // 2^20: the grid of footprint.hpp
 // Clipper's coordinates must stay within ±hiRange; a millimetre model a
 // kilometre wide needs 2^40, far inside it (solid.cpp refuses larger).
 constexpr double kMostCells = 4.0e18;
@@ -41,7 +40,7 @@ constexpr double kMostCells = 4.0e18;
 constexpr std::array<double, 3> kGrowSteps{2.0, 3.0, 5.0};
 
 cInt to_grid(double mm) {
-  const double cells = std::round(mm * kCellsPerMm);
+  const double cells = std::round(mm * kFootprintCellsPerMm);
   if (!(std::fabs(cells) < kMostCells)) {
     throw GeometryError("a footprint point lies too far from the origin");
   }
@@ -169,8 +168,8 @@ Footprint to_footprint(const Paths& rings) {
     std::vector<glm::dvec2> points;
     points.reserve(ring.size());
     for (const IntPoint& p : ring) {
-      points.emplace_back(static_cast<double>(p.X) / kCellsPerMm,
-                          static_cast<double>(p.Y) / kCellsPerMm);
+      points.emplace_back(static_cast<double>(p.X) / kFootprintCellsPerMm,
+                          static_cast<double>(p.Y) / kFootprintCellsPerMm);
     }
     out.rings.push_back(std::move(points));
   }

@@ -190,22 +190,13 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
       return;
     }
     // A long face (a tube's side along a whole branch, a sliver of the flat
-    // underside) goes to the cells it passes through: those whose centre
-    // lies within half a cell's diagonal of it. Any point of the face lies
-    // in such a cell, so a query box that meets the face visits one of
-    // them. Beyond kHugeCells it goes to the list every query visits.
+    // underside) goes to the cells it passes through; beyond kHugeCells, to
+    // the list every query visits.
     if (cells > kHugeCells) {
       large_.push_back(f.idx());
       return;
     }
-    // Half the diagonal, and a thousandth for rounding.
-    const double reach = 0.8669 * grid_.cell_mm();
-    grid_.for_each(lo, hi, [&](Cell key, const glm::dvec3& centre) {
-      const glm::dvec3 d = closest_point_on_triangle(centre, t.points[0],
-                                                     t.points[1], t.points[2]) -
-                           centre;
-      if (glm::dot(d, d) <= reach * reach) add(key);
-    });
+    for_each_cell_through(grid_, t.points[0], t.points[1], t.points[2], add);
   }
 
   bool refuse() {

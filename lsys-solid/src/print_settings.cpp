@@ -24,29 +24,30 @@ double file_length(const lsys::Grammar& grammar,
   }
 }
 
+// The error for a word that is none of a setting's choices.
+lsys::ParseError not_a_choice(const std::string& text, const std::string& what,
+                              const std::string& must_be) {
+  return lsys::ParseError(
+      lsys::Diagnostic{.file = what,
+                       .line = 1,
+                       .column = 1,
+                       .message = must_be + ", not '" + text + "'",
+                       .source_line = text});
+}
+
 }  // namespace
 
 Base parse_base(const std::string& text, const std::string& what) {
   if (text == "auto") return Base::Auto;
   if (text == "disc") return Base::Disc;
   if (text == "none") return Base::None;
-  throw lsys::ParseError(lsys::Diagnostic{
-      .file = what,
-      .line = 1,
-      .column = 1,
-      .message = "base must be auto, disc or none, not '" + text + "'",
-      .source_line = text});
+  throw not_a_choice(text, what, "base must be auto, disc or none");
 }
 
 Profile parse_profile(const std::string& text, const std::string& what) {
   if (text == "flat") return Profile::Flat;
   if (text == "round") return Profile::Round;
-  throw lsys::ParseError(lsys::Diagnostic{
-      .file = what,
-      .line = 1,
-      .column = 1,
-      .message = "profile must be flat or round, not '" + text + "'",
-      .source_line = text});
+  throw not_a_choice(text, what, "profile must be flat or round");
 }
 
 std::vector<Rgb> parse_colors(const std::string& text,

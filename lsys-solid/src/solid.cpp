@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 #include <map>
 #include <set>
+#include <string_view>
 
 #include "lsolid/boolean.hpp"
 #include "lsolid/colors.hpp"
@@ -195,31 +196,42 @@ std::string lost_parts(const std::vector<Witness>& outside,
 // at least the largest part's volume. A union that lost geometry is an
 // error, never a printable model.
 // @throws GeometryError naming the parts lost.
-void check_union_kept(const TriangleMesh& mesh, const PartsKept& kept,
-                      SolidReport& report) {
+// Every witness at least kRoundingDepthMm deep lies inside `mesh`, and
+// every piece of it holds one; `what` names the result ("the union") and
+// `advice` ends the message. Counts the witnesses checked into `report`.
+// @throws GeometryError naming the parts lost, or the largest fragment.
+void check_witnesses(const TriangleMesh& mesh,
+                     const std::vector<Witness>& witnesses,
+                     const PartsKept& kept, std::string_view what,
+                     std::string_view advice, SolidReport& report) {
   const std::vector<Witness> outside =
-      witnesses_outside(mesh, kept.witnesses, kRoundingDepthMm);
+      witnesses_outside(mesh, witnesses, kRoundingDepthMm);
   report.witnesses_checked = static_cast<std::size_t>(std::count_if(
-      kept.witnesses.begin(), kept.witnesses.end(),
+      witnesses.begin(), witnesses.end(),
       [](const Witness& w) { return w.depth_mm >= kRoundingDepthMm; }));
   if (!outside.empty()) {
-    throw GeometryError(
-        "the union lost part of the model (a bug in lsolid; please report "
-        "it with this file): " +
-        lost_parts(outside, kept));
+    throw GeometryError(fmt::format(
+        "{} lost part of the model (a bug in lsolid; please report it with "
+        "this file{}): {}",
+        what, advice, lost_parts(outside, kept)));
   }
   const std::vector<Shell> fragments =
-      unaccounted_pieces(mesh, kept.witnesses, kRoundingDepthMm);
+      unaccounted_pieces(mesh, witnesses, kRoundingDepthMm);
   if (!fragments.empty()) {
     const glm::dvec3 at =
         (fragments.front().bounds.min + fragments.front().bounds.max) / 2.0;
     throw GeometryError(fmt::format(
-        "the repair of the union left {} loose fragment{} that no part "
-        "accounts for (a bug in lsolid; please report it with this file): "
-        "the largest {:.3g} mm³ around ({:.3f}, {:.3f}, {:.3f}) mm",
-        fragments.size(), fragments.size() == 1 ? "" : "s",
+        "the repair of {} left {} loose fragment{} that no part accounts for "
+        "(a bug in lsolid; please report it with this file{}): the largest "
+        "{:.3g} mm³ around ({:.3f}, {:.3f}, {:.3f}) mm",
+        what, fragments.size(), fragments.size() == 1 ? "" : "s", advice,
         fragments.front().volume_mm3, at.x, at.y, at.z));
   }
+}
+
+void check_union_kept(const TriangleMesh& mesh, const PartsKept& kept,
+                      SolidReport& report) {
+  check_witnesses(mesh, kept.witnesses, kept, "the union", "", report);
   const double volume = signed_volume(mesh);
   if (volume < kept.largest_mm3 * (1.0 - kVolumeSlack)) {
     throw GeometryError(fmt::format(
@@ -385,8 +397,8 @@ FlatModel flat_model(const lsys::Skeleton& skeleton, const Placement& placement,
   // Ends meet where they fall on the same point of a 2^-20 mm grid.
   std::map<std::pair<double, double>, Node> nodes;
   const auto end_at = [&](const glm::dvec3& p, double r, int color) {
-    const auto key =
-        std::pair(std::round(p.x * 1048576.0), std::round(p.y * 1048576.0));
+    const auto key = std::pair(std::round(p.x * kFootprintCellsPerMm),
+                               std::round(p.y * kFootprintCellsPerMm));
     Node& node = nodes[key];
     if (node.ends++ == 0) {
       node.at = glm::dvec2(p);
@@ -500,22 +512,34 @@ void extrude_and_finish(const FlatModel& flat, const std::vector<Part>& parts,
   tell("rounding", 0.0);
   mesh = round_and_repair(mesh, options.float_coordinates, report.rounding);
   placement.moved_by_mm.z -= placement.cut_z_mm;
-  const std::vector<Witness> moved =
-      lowered(kept.witnesses, placement.cut_z_mm);
-  report.witnesses_checked = static_cast<std::size_t>(std::count_if(
-      moved.begin(), moved.end(),
-      [](const Witness& w) { return w.depth_mm >= kRoundingDepthMm; }));
-  const std::vector<Witness> outside =
-      witnesses_outside(mesh, moved, kRoundingDepthMm);
-  if (!outside.empty()) {
-    throw GeometryError(
-        "the footprint lost part of the model (a bug in lsolid; please "
-        "report it with this file; --profile round builds it as round "
-        "tubes): " +
-        lost_parts(outside, kept));
-  }
+  check_witnesses(mesh, lowered(kept.witnesses, placement.cut_z_mm), kept,
+                  "the footprint", "; --profile round builds it as round tubes",
+                  report);
   report.seconds.round = clock.lap();
   decimate_and_check(mesh, kept, options, report, clock, tell);
+}
+
+// The whole model as the one volume of a model in one colour.
+ColoredMesh one_volume(const Solid& whole, int color) {
+  return ColoredMesh{
+      .mesh = whole.mesh,
+      .colors = std::vector<int>(whole.mesh.triangles.size(), color)};
+}
+
+// Appends the volume of `color` to `volumes`.
+// @throws GeometryError if it is not printable.
+void add_volume(std::vector<ColoredMesh>& volumes, TriangleMesh volume,
+                int color) {
+  const ValidationReport check = validate(volume);
+  if (!check.is_printable()) {
+    throw GeometryError(fmt::format(
+        "the volume of colour {}, less the colours below it, is not "
+        "printable: {}",
+        color, fmt::join(check.problems(), "; ")));
+  }
+  const std::size_t n = volume.triangles.size();
+  volumes.push_back(ColoredMesh{.mesh = std::move(volume),
+                                .colors = std::vector<int>(n, color)});
 }
 
 // The flat profile's volumes per colour: each material's outlines less
@@ -526,10 +550,7 @@ std::vector<ColoredMesh> flat_color_volumes(const FlatModel& flat,
                                             const SolidOptions& options) {
   std::set<int> materials(flat.materials.begin(), flat.materials.end());
   if (materials.size() <= 1) {
-    const int color = materials.empty() ? 0 : *materials.begin();
-    return {ColoredMesh{
-        .mesh = whole.mesh,
-        .colors = std::vector<int>(whole.mesh.triangles.size(), color)}};
+    return {one_volume(whole, materials.empty() ? 0 : *materials.begin())};
   }
   std::vector<ColoredMesh> volumes;
   std::vector<std::vector<glm::dvec2>> below;
@@ -541,16 +562,7 @@ std::vector<ColoredMesh> flat_color_volumes(const FlatModel& flat,
     RoundingStats rounding;
     TriangleMesh volume = round_and_repair(extrude(footprint, flat.height_mm),
                                            options.float_coordinates, rounding);
-    const ValidationReport check = validate(volume);
-    if (!check.is_printable()) {
-      throw GeometryError(fmt::format(
-          "the volume of colour {}, less the colours below it, is not "
-          "printable: {}",
-          material, fmt::join(check.problems(), "; ")));
-    }
-    const std::size_t n = volume.triangles.size();
-    volumes.push_back(ColoredMesh{.mesh = std::move(volume),
-                                  .colors = std::vector<int>(n, material)});
+    add_volume(volumes, std::move(volume), material);
   }
   return volumes;
 }
@@ -568,10 +580,7 @@ std::vector<ColoredMesh> color_volumes(std::vector<Part> parts,
   std::map<int, std::vector<Part>> by_color;
   for (Part& part : parts) by_color[part.color].push_back(std::move(part));
   if (by_color.size() <= 1) {
-    const int color = by_color.empty() ? 0 : by_color.begin()->first;
-    return {ColoredMesh{
-        .mesh = whole.mesh,
-        .colors = std::vector<int>(whole.mesh.triangles.size(), color)}};
+    return {one_volume(whole, by_color.empty() ? 0 : by_color.begin()->first)};
   }
   std::vector<ColoredMesh> volumes;
   TriangleMesh filled;  // the union of the volumes so far
@@ -605,16 +614,7 @@ std::vector<ColoredMesh> color_volumes(std::vector<Part> parts,
       }
     }
     if (!volume.triangles.empty()) {
-      const ValidationReport check = validate(volume);
-      if (!check.is_printable()) {
-        throw GeometryError(fmt::format(
-            "the volume of colour {}, less the colours below it, is not "
-            "printable: {}",
-            color, fmt::join(check.problems(), "; ")));
-      }
-      const std::size_t n = volume.triangles.size();
-      volumes.push_back(ColoredMesh{.mesh = std::move(volume),
-                                    .colors = std::vector<int>(n, color)});
+      add_volume(volumes, std::move(volume), color);
     }
     if (filled.triangles.empty()) {
       filled = std::move(own);

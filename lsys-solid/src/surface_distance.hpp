@@ -48,6 +48,24 @@ namespace lsolid {
   return a + ab * (vb * denominator) + ac * (vc * denominator);
 }
 
+/// Calls visit(key) for the cells of `grid` that triangle abc passes
+/// through: those whose centre lies within half a cell's diagonal of it (a
+/// thousandth more, for rounding). Every point of the triangle lies in one
+/// of them, so a query that meets the triangle visits one; a long sliver
+/// fills far fewer cells than its box.
+template <typename Visit>
+void for_each_cell_through(const CellGrid& grid, const glm::dvec3& a,
+                           const glm::dvec3& b, const glm::dvec3& c,
+                           Visit visit) {
+  const double reach = 0.8669 * grid.cell_mm();
+  grid.for_each(glm::min(glm::min(a, b), c), glm::max(glm::max(a, b), c),
+                [&](std::uint64_t key, const glm::dvec3& centre) {
+                  const glm::dvec3 d =
+                      closest_point_on_triangle(centre, a, b, c) - centre;
+                  if (glm::dot(d, d) <= reach * reach) visit(key);
+                });
+}
+
 /// A fixed surface that answers "is this point within d of it?" through a
 /// uniform grid of its triangles. The decimation keeps one of the input to
 /// test that new triangles do not stray from it.
@@ -83,15 +101,10 @@ class SurfaceDistance {
         large_.push_back(i);  // tested by every query
       } else if (cells > kLargeCells) {
         // A long sliver across many cells, such as the flat underside's:
-        // only the cells it passes through, those whose centre lies within
-        // half a cell's diagonal of it.
-        const double reach = 0.8660254037844387 * grid_.cell_mm();
-        grid_.for_each(
-            lo, hi, [&](std::uint64_t key, const glm::dvec3& centre) {
-              const glm::dvec3 d =
-                  closest_point_on_triangle(centre, a, b, c) - centre;
-              if (glm::dot(d, d) <= reach * reach) cells_[key].push_back(i);
-            });
+        // only the cells it passes through.
+        for_each_cell_through(grid_, a, b, c, [&](std::uint64_t key) {
+          cells_[key].push_back(i);
+        });
       } else {
         grid_.for_each(lo, hi, [&](std::uint64_t key, const glm::dvec3&) {
           cells_[key].push_back(i);

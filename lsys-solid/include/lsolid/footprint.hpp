@@ -9,6 +9,9 @@
 
 namespace lsolid {
 
+/// Footprint points lie on a grid of this many cells a millimetre (2^20).
+inline constexpr double kFootprintCellsPerMm = 1048576.0;
+
 /// The region of the plane that a model lying flat covers, seen from above:
 /// the union of its branches' and leaves' outlines, in millimetres, with
 /// every point on a grid of 2^-20 mm.

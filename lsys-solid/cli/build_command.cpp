@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 
 #include "commands.hpp"
@@ -60,10 +61,10 @@ void print_report(const SolidReport& r, bool united) {
         r.flat_outlines, r.flat_rings, r.witnesses_checked);
   } else if (united) {
     fmt::print(
-        "union: {} booleans ({} rounded to doubles), {} joined without a "
-        "boolean, {} retried, {} cavities filled; {} points inside the "
-        "parts found inside it\n",
-        r.union_stats.booleans, r.union_stats.rounded,
+        "union: {} contacts, {} booleans ({} rounded to doubles), {} joined "
+        "without a boolean, {} retried, {} cavities filled; {} points inside "
+        "the parts found inside it\n",
+        r.union_stats.contacts, r.union_stats.booleans, r.union_stats.rounded,
         r.union_stats.concatenations, r.union_stats.retries, r.cavities_filled,
         r.witnesses_checked);
   }
@@ -181,7 +182,8 @@ std::string json_report(const Solid& solid, const OverhangReport& over,
   return fmt::format(
       "{{\"output\": {}, \"written\": {}, \"united\": {}, \"segments\": {}, "
       "\"leaves\": {}, \"tubes\": {}, \"junction_hulls\": {}, \"joints\": {}, "
-      "\"leaf_plates\": {}, \"booleans\": {}, \"mm_per_unit\": {}, "
+      "\"leaf_plates\": {}, \"contacts\": {}, \"booleans\": {}, "
+      "\"mm_per_unit\": {}, "
       "\"base\": {}, \"lies_flat\": {}, \"profile\": {}, "
       "\"underside_cut_mm\": {}, "
       "\"decimation\": {}, \"colors\": {}, \"volumes\": {}, "
@@ -194,8 +196,8 @@ std::string json_report(const Solid& solid, const OverhangReport& over,
       "\"rounding\": {}, \"decimation\": {}, \"check\": {}, "
       "\"volumes\": {}}}}}\n",
       json_string(output.string()), written, united, r.segments, r.polygons,
-      r.tubes, r.junctions, r.joints, r.plates, r.union_stats.booleans,
-      r.mm_per_unit,
+      r.tubes, r.junctions, r.joints, r.plates, r.union_stats.contacts,
+      r.union_stats.booleans, r.mm_per_unit,
       p.has_base ? fmt::format("{{\"radius_mm\": {}, \"thickness_mm\": {}}}",
                                p.base_radius_mm, p.base_thickness_mm)
                  : std::string("null"),
@@ -350,23 +352,34 @@ int run_build(const BuildCommand& command) {
   options.multi_material = command.multi_material;
   const bool text = !command.quiet && !command.json;
   // A progress bar on a terminal only: redrawn in place on standard error,
-  // and wiped before the report.
+  // and wiped before the report. A stage expected to take 10 s or more says
+  // so from its start, so that a long build is known to be one early.
   const bool bar = text && ::isatty(STDERR_FILENO) != 0;
+  auto expected = std::make_shared<std::pair<std::string, double>>();
   if (bar) {
-    options.progress = [](std::string_view stage, double fraction) {
+    options.expect = [expected](std::string_view stage, double seconds) {
+      *expected = {std::string(stage), seconds};
+    };
+    options.progress = [expected](std::string_view stage, double fraction) {
       constexpr int kWidth = 30;
       const int filled = static_cast<int>(fraction * kWidth);
+      std::string note;
+      if (expected->first == stage && expected->second >= 10.0) {
+        note = expected->second < 90.0
+                   ? fmt::format("  about {:.0f} s", expected->second)
+                   : fmt::format("  about {:.0f} min", expected->second / 60.0);
+      }
       std::fprintf(
-          stderr, "\r%-10.*s [%s%s] %3d%%", static_cast<int>(stage.size()),
+          stderr, "\r%-10.*s [%s%s] %3d%%%-16s", static_cast<int>(stage.size()),
           stage.data(),
           std::string(static_cast<std::size_t>(filled), '#').c_str(),
           std::string(static_cast<std::size_t>(kWidth - filled), ' ').c_str(),
-          static_cast<int>(fraction * 100.0));
+          static_cast<int>(fraction * 100.0), note.c_str());
       std::fflush(stderr);
     };
   }
   const Solid solid = build_solid(grammar, options);
-  if (bar) std::fprintf(stderr, "\r%50s\r", "");
+  if (bar) std::fprintf(stderr, "\r%66s\r", "");
   warn_about_polygons(solid.report.dropped);
   for (const std::string& warning : solid.report.warnings) {
     std::fprintf(stderr, "warning: %s\n", warning.c_str());

@@ -328,8 +328,11 @@ void unite_and_finish(std::vector<Part> parts, const SolidOptions& options,
   PartsKept kept;
   if (options.unite) kept = parts_kept(parts);
   if (options.unite) {
-    UnionResult united = union_parts(std::move(parts),
-                                     [&](double done) { tell("union", done); });
+    UnionResult united = union_parts(
+        std::move(parts), [&](double done) { tell("union", done); },
+        [&](double seconds) {
+          if (options.expect) options.expect("union", seconds);
+        });
     mesh = std::move(united.mesh);
     report.union_stats = united.stats;
     report.cavities_filled = remove_cavities(mesh);

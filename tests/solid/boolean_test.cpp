@@ -8,6 +8,8 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "lsolid/errors.hpp"
 #include "support/mesh_checks.hpp"
@@ -44,6 +46,27 @@ TEST(Boolean, UnitesTwoBoxesToTheirExactVolume) {
   expect_printable(u.mesh);
   EXPECT_DOUBLE_EQ(signed_volume(u.mesh), 8.0 + 8.0 - 1.0);
   EXPECT_EQ(u.stats.booleans, 1U);
+}
+
+TEST(Boolean, CountsItsContactsAndTellsItsExpectedTimeBeforeTheFirstBoolean) {
+  // Each cube has three faces (six triangles, each as wide as its face) in
+  // the other's box; the third cube meets neither.
+  std::vector<Part> parts{{box_mesh({0, 0, 0}, {2, 2, 2}), "a"},
+                          {box_mesh({1, 1, 1}, {3, 3, 3}), "b"},
+                          {box_mesh({9, 9, 9}, {10, 10, 10}), "c"}};
+  std::vector<std::string> told;
+  double expected = -1.0;
+  const UnionResult u = union_parts(
+      std::move(parts), [&](double) { told.emplace_back("progress"); },
+      [&](double seconds) {
+        told.emplace_back("expect");
+        expected = seconds;
+      });
+  EXPECT_EQ(u.stats.contacts, 12U);
+  EXPECT_DOUBLE_EQ(expected, 12 * kUnionSecondsPerContact);
+  ASSERT_FALSE(told.empty());
+  EXPECT_EQ(told.front(), "expect");
+  EXPECT_EQ(std::count(told.begin(), told.end(), "expect"), 1);
 }
 
 TEST(Boolean, JoinsPartsWithDisjointBoxesWithoutABoolean) {

@@ -199,11 +199,20 @@ TEST(Solid, TellsItsProgressStageByStage) {
       last_union = fraction;
     }
   };
-  (void)build_solid(parse("\u03C9: F[+F][-F]\n\u03B4=30\u00B0\n"), options);
+  // The union's expected time is told as it begins, before it moves.
+  std::vector<std::string> expected;
+  options.expect = [&](std::string_view stage, double seconds) {
+    expected.emplace_back(stage);
+    EXPECT_EQ(last_union, 0.0);
+    EXPECT_GT(seconds, 0.0);
+  };
+  // Not planar, so united in 3D.
+  (void)build_solid(parse("\u03C9: F[+F][&F]\n\u03B4=30\u00B0\n"), options);
   EXPECT_EQ(stages,
             (std::vector<std::string>{"skeleton", "parts", "union", "rounding",
                                       "decimation", "check"}));
   EXPECT_EQ(last_union, 1.0);
+  EXPECT_EQ(expected, std::vector<std::string>{"union"});
 }
 
 TEST(Solid, AbopBushWithLeavesIsOneValidShell) {

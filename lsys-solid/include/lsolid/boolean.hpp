@@ -24,7 +24,17 @@ struct UnionStats {
   /// Unions whose new vertices could all be rounded to doubles before the
   /// next union (see design.md).
   std::size_t rounded = 0;
+  /// Triangles of a part whose box meets the box of another part whose box
+  /// meets the part's, counted once per such pair of parts: where the
+  /// corefinement has work to do, and what its time follows.
+  std::size_t contacts = 0;
 };
+
+/// The union's time per contact (UnionStats::contacts) on the project's
+/// 2-core machine: between 45 and 155 µs on ten models from 66,000 to
+/// 620,000 contacts (docs/performance.md), so an estimate from it is good
+/// to a factor of about two.
+inline constexpr double kUnionSecondsPerContact = 80e-6;
 
 /// The union of all parts.
 struct UnionResult {
@@ -47,8 +57,12 @@ struct UnionResult {
 ///   or a union still fails.
 /// @param progress if not empty, called after each union with the fraction
 ///   of the work done (weighted by the operands' sizes), ending with 1.
+/// @param expect if not empty, called once before the first boolean with
+///   the seconds the union is expected to take: its contacts times
+///   kUnionSecondsPerContact.
 [[nodiscard]] UnionResult union_parts(
-    std::vector<Part> parts, const std::function<void(double)>& progress = {});
+    std::vector<Part> parts, const std::function<void(double)>& progress = {},
+    const std::function<void(double seconds)>& expect = {});
 
 /// What of `a` lies outside `b` (CGAL's corefinement over exact
 /// constructions), rounded to doubles: the new vertices lie on `b`'s

@@ -47,6 +47,11 @@ struct SolidOptions {
   /// the fraction of it done, 0 to 1,
   /// from the thread that builds. Empty: not told.
   std::function<void(std::string_view stage, double fraction)> progress;
+  /// Told, as a stage begins, how many seconds it is expected to take on
+  /// the project's 2-core machine, where that can be estimated before the
+  /// work (the union: UnionStats::contacts), from the thread that builds.
+  /// Empty: not told.
+  std::function<void(std::string_view stage, double seconds)> expect;
 };
 
 /// Seconds spent in each stage.

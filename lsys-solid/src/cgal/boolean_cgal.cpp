@@ -174,10 +174,14 @@ class Unioner {
   Unioner(std::vector<Part> parts, std::function<void(double)> progress)
       : parts_(std::move(parts)), progress_(std::move(progress)) {}
 
-  UnionResult run() {
+  UnionResult run(const std::function<void(double)>& expect) {
     if (parts_.empty())
       throw GeometryError("nothing to unite: there are no parts");
-    const Group all = reduce(initial_groups(), true);
+    std::vector<Group> groups = initial_groups();
+    if (expect) {
+      expect(static_cast<double>(stats_.contacts) * kUnionSecondsPerContact);
+    }
+    const Group all = reduce(std::move(groups), true);
     UnionResult result;
     result.stats = stats_;
     result.mesh = to_triangle_mesh(all.mesh);
@@ -208,6 +212,7 @@ class Unioner {
                                     neighbours[a.info()].push_back(b.info());
                                     neighbours[b.info()].push_back(a.info());
                                   });
+    count_contacts(boxes, neighbours);
     const glm::dvec3 span = glm::max(all.size(), glm::dvec3(1e-9));
     std::vector<std::pair<std::uint32_t, std::size_t>> order;
     for (std::size_t i = 0; i < parts_.size(); ++i) {
@@ -246,6 +251,28 @@ class Unioner {
       }
     }
     return groups;
+  }
+
+  // Counts, for each part, its triangles whose box meets the box of a
+  // neighbour (once per neighbour): a cheap measure, before any boolean, of
+  // how much corefinement work the union holds.
+  void count_contacts(const std::vector<CGAL::Bbox_3>& boxes,
+                      const std::vector<std::vector<std::size_t>>& neighbours) {
+    for (std::size_t i = 0; i < parts_.size(); ++i) {
+      if (neighbours[i].empty()) continue;
+      const TriangleMesh& mesh = parts_[i].mesh;
+      for (const auto& t : mesh.triangles) {
+        const glm::dvec3& a = mesh.vertices[t[0]];
+        const glm::dvec3& b = mesh.vertices[t[1]];
+        const glm::dvec3& c = mesh.vertices[t[2]];
+        const glm::dvec3 lo = glm::min(glm::min(a, b), c);
+        const glm::dvec3 hi = glm::max(glm::max(a, b), c);
+        const CGAL::Bbox_3 triangle_box(lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
+        for (const std::size_t j : neighbours[i]) {
+          if (CGAL::do_overlap(triangle_box, boxes[j])) ++stats_.contacts;
+        }
+      }
+    }
   }
 
   // Corefinement requires closed operands without self-intersections; a
@@ -410,8 +437,9 @@ class Unioner {
 }  // namespace
 
 UnionResult union_parts(std::vector<Part> parts,
-                        const std::function<void(double)>& progress) {
-  return Unioner(std::move(parts), progress).run();
+                        const std::function<void(double)>& progress,
+                        const std::function<void(double)>& expect) {
+  return Unioner(std::move(parts), progress).run(expect);
 }
 
 TriangleMesh subtract(const TriangleMesh& a, const TriangleMesh& b) {

@@ -45,7 +45,12 @@ std::map<int, std::size_t> color_counts(const Solid& solid) {
 
 void print_report(const SolidReport& r, bool united) {
   const ValidationReport& v = r.validation;
-  fmt::print("segments: {}, leaves: {}\n", r.segments, r.polygons);
+  fmt::print("segments: {}{}, leaves: {}\n", r.segments,
+             r.repeated_segments == 0
+                 ? std::string()
+                 : fmt::format(" ({} drawn again over another, left out)",
+                               r.repeated_segments),
+             r.polygons);
   fmt::print(
       "parts: {} tubes, {} junction hulls, {} joints, {} leaf plates; scale "
       "{:.4g} mm per unit\n",
@@ -181,6 +186,7 @@ std::string json_report(const Solid& solid, const OverhangReport& over,
   }
   return fmt::format(
       "{{\"output\": {}, \"written\": {}, \"united\": {}, \"segments\": {}, "
+      "\"repeated_segments\": {}, "
       "\"leaves\": {}, \"tubes\": {}, \"junction_hulls\": {}, \"joints\": {}, "
       "\"leaf_plates\": {}, \"contacts\": {}, \"booleans\": {}, "
       "\"mm_per_unit\": {}, "
@@ -195,9 +201,9 @@ std::string json_report(const Solid& solid, const OverhangReport& over,
       "\"seconds\": {{\"skeleton\": {}, \"parts\": {}, \"union\": {}, "
       "\"rounding\": {}, \"decimation\": {}, \"check\": {}, "
       "\"volumes\": {}}}}}\n",
-      json_string(output.string()), written, united, r.segments, r.polygons,
-      r.tubes, r.junctions, r.joints, r.plates, r.union_stats.contacts,
-      r.union_stats.booleans, r.mm_per_unit,
+      json_string(output.string()), written, united, r.segments,
+      r.repeated_segments, r.polygons, r.tubes, r.junctions, r.joints, r.plates,
+      r.union_stats.contacts, r.union_stats.booleans, r.mm_per_unit,
       p.has_base ? fmt::format("{{\"radius_mm\": {}, \"thickness_mm\": {}}}",
                                p.base_radius_mm, p.base_thickness_mm)
                  : std::string("null"),

@@ -22,6 +22,7 @@
 #include "lsolid/errors.hpp"
 #include "lsolid/footprint.hpp"
 #include "lsolid/parts.hpp"
+#include "lsolid/repeated_segments.hpp"
 #include "lsolid/rounding.hpp"
 #include "lsolid/scale.hpp"
 #include "lsolid/validate.hpp"
@@ -712,13 +713,18 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
     if (options.progress) options.progress(stage, fraction);
   };
   tell("skeleton", 0.0);
-  const lsys::Skeleton skeleton =
+  const lsys::Skeleton drawn =
       lsys::interpret(grammar, options.derivation, options.interpretation);
   // Drawing nothing is a mistake in the input, placed where it is made.
-  if (skeleton.segments.empty() && skeleton.polygons.empty()) {
-    throw lsys::nothing_drawn_error(grammar, skeleton);
+  if (drawn.segments.empty() && drawn.polygons.empty()) {
+    throw lsys::nothing_drawn_error(grammar, drawn);
   }
-  report.segments = skeleton.segments.size();
+  // A segment drawn again over an earlier one adds nothing to the print,
+  // only coincident tubes for the union to meet face on face.
+  const WithoutRepeats unique = without_repeated_segments(drawn);
+  const lsys::Skeleton& skeleton = unique.skeleton;
+  report.repeated_segments = unique.dropped;
+  report.segments = drawn.segments.size();
   report.polygons = skeleton.polygons.size();
   report.dropped.degenerate_polygons = skeleton.degenerate_polygons;
   report.dropped.unclosed_polygons = skeleton.unclosed_polygons;

@@ -466,6 +466,22 @@ TEST_F(Build, FusesTubesThatTouch) {
   EXPECT_NE(built.out.find("1 shell, genus 0"), std::string::npos) << built.out;
 }
 
+TEST_F(Build, LeavesOutSegmentsDrawnAgainAndSaysHowMany) {
+  { std::ofstream(dir_ / "again.ls") << "base: none\n\u03C9: F[F][F]F\n"; }
+  const auto built = run_command(lsolid() + " again.ls", dir_);
+  EXPECT_EQ(built.exit_code, 0) << built.err;
+  EXPECT_NE(built.out.find("segments: 4 (2 drawn again over another, left "
+                           "out), leaves: 0\n"),
+            std::string::npos)
+      << built.out;
+  // One straight tube: nothing is left for a union to do.
+  EXPECT_NE(built.out.find("parts: 1 tubes, 0 junction hulls, 0 joints"),
+            std::string::npos)
+      << built.out;
+  EXPECT_NE(built.out.find("union: 0 contacts, 0 booleans"), std::string::npos)
+      << built.out;
+}
+
 TEST_F(Build, IsQuietOrSpeaksJsonWhenAsked) {
   use_printable("hilbert-cube", "h.ls");
   const auto quiet = run_command(lsolid() + " h.ls -q", dir_);
@@ -477,7 +493,8 @@ TEST_F(Build, IsQuietOrSpeaksJsonWhenAsked) {
   const std::string head =
       "{\"output\": \"j.stl\", \"written\": true, \"united\": true, ";
   EXPECT_EQ(json.out.substr(0, head.size()), head);
-  EXPECT_NE(json.out.find("\"segments\": 63, \"leaves\": 0, \"tubes\": 1,"),
+  EXPECT_NE(json.out.find("\"segments\": 63, \"repeated_segments\": 0, "
+                          "\"leaves\": 0, \"tubes\": 1,"),
             std::string::npos)
       << json.out;
   EXPECT_NE(json.out.find("\"printable\": true, \"shells\": 1, \"pieces\": 1, "

@@ -69,6 +69,9 @@ struct StageSeconds {
 struct SolidReport {
   Placement placement;
   std::size_t segments = 0;
+  /// Segments that repeat an earlier one, left out before the parts
+  /// (without_repeated_segments).
+  std::size_t repeated_segments = 0;
   std::size_t polygons = 0;
   std::size_t tubes = 0;
   std::size_t junctions = 0;  ///< branch points meshed directly

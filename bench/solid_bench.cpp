@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <exception>
 #include <filesystem>
 #include <string>
 
@@ -49,11 +50,17 @@ void build(benchmark::State& state, const std::string& file, int n,
   lsolid::SolidReport report;
   std::size_t volumes = 0;
   for (auto _ : state) {
-    const lsolid::Solid s = lsolid::build_solid(
-        grammar,
-        {.derivation = {.derivation_length = n}, .multi_material = multi});
-    report = s.report;
-    volumes = s.volumes.size();
+    // A build that fails is this case's result, not the end of the run.
+    try {
+      const lsolid::Solid s = lsolid::build_solid(
+          grammar,
+          {.derivation = {.derivation_length = n}, .multi_material = multi});
+      report = s.report;
+      volumes = s.volumes.size();
+    } catch (const std::exception& e) {
+      state.SkipWithError(e.what());
+      return;
+    }
     if (!report.validation.is_printable()) state.SkipWithError("not printable");
   }
   state.counters["segments"] = static_cast<double>(report.segments);
@@ -101,7 +108,12 @@ void build_text(benchmark::State& state, const std::string& text) {
       text, {.extra_settings = lsolid::print_setting_names()}, "bench.ls");
   lsolid::SolidReport report;
   for (auto _ : state) {
-    report = lsolid::build_solid(grammar).report;
+    try {
+      report = lsolid::build_solid(grammar).report;
+    } catch (const std::exception& e) {
+      state.SkipWithError(e.what());
+      return;
+    }
     if (!report.validation.is_printable()) state.SkipWithError("not printable");
   }
   state.counters["segments"] = static_cast<double>(report.segments);

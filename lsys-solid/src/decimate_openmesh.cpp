@@ -425,13 +425,13 @@ class GuardedDecimater : public OpenMesh::Decimater::BaseDecimaterT<Mesh> {
   }
 
   // True when a point sampled on a new triangle lies farther than the
-  // tolerance from the input surface. ModHausdorffT measures only at the
-  // removed vertices; a long new triangle can still bridge a crease (0.10 mm
-  // for 0.05 mm on the bush before this test). The grid is the one
-  // sampled_distance measures the result on (at least 2 steps a side), so
-  // that every point it measures on a triangle of the result was tested
-  // when the triangle was made. With a grid four tolerances apart (at most
-  // 8 steps), a 1.3 mm triangle of the bush at n = 7 bulged 0.071 mm from
+  // tolerance from the input surface. The input pieces bound how far the
+  // input lies from the result, not the other way: a long new triangle can
+  // bridge a crease (0.10 mm for 0.05 mm on the bush before this test). The
+  // grid is the one sampled_distance measures the result on (at least 2 steps a
+  // side), so that every point it measures on a triangle of the result was
+  // tested when the triangle was made. With a grid four tolerances apart (at
+  // most 8 steps), a 1.3 mm triangle of the bush at n = 7 bulged 0.071 mm from
   // the input between samples, and the whole decimation ran again aiming
   // lower.
   // @pre take_new_triangles was called for the collapse.

@@ -10,7 +10,6 @@
 #include <cstring>
 #include <filesystem>
 #include <map>
-#include <memory>
 #include <optional>
 
 #include "commands.hpp"
@@ -361,19 +360,21 @@ int run_build(const BuildCommand& command) {
   // and wiped before the report. A stage expected to take 10 s or more says
   // so from its start, so that a long build is known to be one early.
   const bool bar = text && ::isatty(STDERR_FILENO) != 0;
-  auto expected = std::make_shared<std::pair<std::string, double>>();
+  // The stage whose time was estimated, and the estimate; both lambdas
+  // live in `options`, which build_solid uses only within this function.
+  std::pair<std::string, double> expected;
   if (bar) {
-    options.expect = [expected](std::string_view stage, double seconds) {
-      *expected = {std::string(stage), seconds};
+    options.expect = [&expected](std::string_view stage, double seconds) {
+      expected = {std::string(stage), seconds};
     };
-    options.progress = [expected](std::string_view stage, double fraction) {
+    options.progress = [&expected](std::string_view stage, double fraction) {
       constexpr int kWidth = 30;
       const int filled = static_cast<int>(fraction * kWidth);
       std::string note;
-      if (expected->first == stage && expected->second >= 10.0) {
-        note = expected->second < 90.0
-                   ? fmt::format("  about {:.0f} s", expected->second)
-                   : fmt::format("  about {:.0f} min", expected->second / 60.0);
+      if (expected.first == stage && expected.second >= 10.0) {
+        note = expected.second < 90.0
+                   ? fmt::format("  about {:.0f} s", expected.second)
+                   : fmt::format("  about {:.0f} min", expected.second / 60.0);
       }
       std::fprintf(
           stderr, "\r%-10.*s [%s%s] %3d%%%-16s", static_cast<int>(stage.size()),

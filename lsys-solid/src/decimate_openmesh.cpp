@@ -194,6 +194,12 @@ class InputPieces {
   InputPieces(Mesh& mesh, const TriangleMesh& input)
       : mesh_(mesh), input_(input) {
     mesh_.add_property(pieces_);
+    // Garbage collection between runs renumbers the vertices; a removed
+    // vertex is named by its index in `input`, which this property keeps.
+    mesh_.add_property(input_vertex_);
+    for (const auto v : mesh_.vertices()) {
+      mesh_.property(input_vertex_, v) = static_cast<std::uint32_t>(v.idx());
+    }
     steps_.reserve(input.triangles.size());
     std::uint32_t index = 0;
     for (const auto f : mesh_.faces()) {
@@ -206,7 +212,10 @@ class InputPieces {
       ++index;
     }
   }
-  ~InputPieces() { mesh_.remove_property(pieces_); }
+  ~InputPieces() {
+    mesh_.remove_property(pieces_);
+    mesh_.remove_property(input_vertex_);
+  }
   InputPieces(const InputPieces&) = delete;
   InputPieces& operator=(const InputPieces&) = delete;
 
@@ -270,8 +279,7 @@ class InputPieces {
       }
       return true;
     };
-    if (!place(place,
-               Piece{static_cast<std::uint32_t>(ci.v0.idx()), -1.0F, {}})) {
+    if (!place(place, Piece{mesh_.property(input_vertex_, ci.v0), -1.0F, {}})) {
       return false;
     }
     for (const auto f : mesh_.vf_range(ci.v0)) {
@@ -318,6 +326,7 @@ class InputPieces {
   const TriangleMesh& input_;
   std::vector<std::uint8_t> steps_;  // per input triangle: its grid
   OpenMesh::FPropHandleT<std::vector<Piece>> pieces_;
+  OpenMesh::VPropHandleT<std::uint32_t> input_vertex_;
   std::vector<std::pair<Piece, std::size_t>> pending_;
   std::vector<Mesh::FaceHandle> star_;
 };
@@ -339,10 +348,10 @@ class GuardedDecimater : public OpenMesh::Decimater::BaseDecimaterT<Mesh> {
   // Collapses until no legal collapse is left or at most `faces` remain.
   // Returns the number of collapses.
   // The vetoes are asked only here, for the collapse about to be made;
-  // each may be null.
+  // each may be null. The input pieces and the input surface must stay
+  // within `tolerance_mm` of the new triangles.
   std::size_t decimate_to_faces(std::size_t faces, InputPieces* samples,
-                                double samples_mm, SurfaceDistance* input,
-                                double tolerance_mm,
+                                SurfaceDistance* input, double tolerance_mm,
                                 ModIntersectionGuardT<Mesh>* guard,
                                 const std::function<void(std::size_t)>& tell) {
     queue_ = {};
@@ -369,7 +378,7 @@ class GuardedDecimater : public OpenMesh::Decimater::BaseDecimaterT<Mesh> {
       }
       const auto refused = [&] {
         take_new_triangles(ci);
-        return (samples != nullptr && !samples->hold(ci, new_, samples_mm)) ||
+        return (samples != nullptr && !samples->hold(ci, new_, tolerance_mm)) ||
                (input != nullptr && strays(*input, tolerance_mm)) ||
                (guard != nullptr && guard->would_intersect(ci));
       };
@@ -543,15 +552,15 @@ std::size_t run(Mesh& mesh, SurfaceDistance& input_surface,
   }
   if (!bounded) {
     // The samples still follow their faces, refusing nothing.
-    return decimater.decimate_to_faces(faces, &samples,
+    return decimater.decimate_to_faces(faces, &samples, nullptr,
                                        std::numeric_limits<double>::infinity(),
-                                       nullptr, 0.0, guard, tell);
+                                       guard, tell);
   }
   // The quadric bounds the kept vertex's distance to planes, not how far
   // the input lies from the new triangles (the samples) or they from it
   // (the input surface).
-  return decimater.decimate_to_faces(faces, &samples, aim_mm, &input_surface,
-                                     aim_mm, guard, tell);
+  return decimater.decimate_to_faces(faces, &samples, &input_surface, aim_mm,
+                                     guard, tell);
 }
 
 // Collapses the edges shorter than `options.min_edge_mm`, shortest first,
@@ -583,9 +592,8 @@ std::size_t collapse_short_edges(Mesh& mesh, SurfaceDistance& input_surface,
   if (!decimater.initialize()) {
     throw GeometryError("cannot set up OpenMesh's decimater");
   }
-  return decimater.decimate_to_faces(0, &samples, options.tolerance_mm,
-                                     &input_surface, options.tolerance_mm,
-                                     guard, {});
+  return decimater.decimate_to_faces(0, &samples, &input_surface,
+                                     options.tolerance_mm, guard, {});
 }
 
 std::size_t count_short_edges(const TriangleMesh& mesh, double length_mm) {

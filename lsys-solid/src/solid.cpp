@@ -589,6 +589,9 @@ std::vector<ColoredMesh> color_volumes(std::vector<Part> parts,
   std::vector<ColoredMesh> volumes;
   TriangleMesh filled;  // the union of the volumes so far
   std::size_t done = 0;
+  // The estimate told is the whole model's union, not each colour's.
+  SolidOptions per_color = options;
+  per_color.expect = nullptr;
   for (auto& [color, group] : by_color) {
     // United uncut: cut volumes would meet on coplanar undersides, where
     // the subtraction's new points fold when rounded. Each volume is cut
@@ -596,7 +599,7 @@ std::vector<ColoredMesh> color_volumes(std::vector<Part> parts,
     SolidReport scratch;
     Stopwatch clock;
     TriangleMesh own;
-    unite_and_finish(std::move(group), options, scratch, own, clock,
+    unite_and_finish(std::move(group), per_color, scratch, own, clock,
                      [](std::string_view, double) {});
     if (!scratch.validation.is_printable()) {
       throw GeometryError(

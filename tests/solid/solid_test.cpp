@@ -266,6 +266,20 @@ TEST(Solid, ColoursEveryTriangleByTheTurtlesColourIndex) {
   }
 }
 
+TEST(Solid, EstimatesTheUnionOnceForAllItsVolumesPerColour) {
+  // Not planar, so that the whole model and each colour are united in 3D.
+  std::vector<std::string> estimated;
+  SolidOptions options{.multi_material = true};
+  options.expect = [&](std::string_view stage, double) {
+    estimated.emplace_back(stage);
+  };
+  const Solid s = build_solid(
+      parse("n=0, \u03B4=45\u00B0\nwidth: 0.2\n\u03C9: FF[+'F][&''F]F\n"),
+      options);
+  EXPECT_EQ(s.volumes.size(), 3U);
+  EXPECT_EQ(estimated, std::vector<std::string>{"union"});
+}
+
 TEST(Solid, BuildsOneVolumePerColourThatDoNotOverlap) {
   const Solid s = build_solid(parse(kThreeColours), {.multi_material = true});
   expect_printable(s.mesh, 1);

@@ -304,7 +304,8 @@ class Compiler {
     for (;;) {
       skip_space();
       const std::size_t at = pos_;
-      if (accept("*") || accept("\u00D7") || accept("\u00B7")) {
+      if ((!text_.substr(pos_).starts_with("**") && accept("*")) ||
+          accept("\u00D7") || accept("\u00B7")) {
         left = binary(Op::Multiply, at, left, parse_unary());
       } else if (accept("/")) {
         left = binary(Op::Divide, at, left, parse_unary());
@@ -347,7 +348,10 @@ class Compiler {
     const int base = parse_primary();
     skip_space();
     const std::size_t at = pos_;
-    if (accept("^")) return binary(Op::Power, at, base, parse_unary());
+    // `**` is Python's spelling, as L-Py files write it.
+    if (accept("^") || accept("**")) {
+      return binary(Op::Power, at, base, parse_unary());
+    }
     return base;
   }
 

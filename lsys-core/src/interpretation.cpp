@@ -12,11 +12,13 @@
 #include <glm/geometric.hpp>
 #include <initializer_list>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <string>
 
 #include "lsys/diagnostic.hpp"
 #include "lsys/module_string.hpp"
+#include "lsys/random.hpp"
 #include "lsys/turtle.hpp"
 #include "rule_index.hpp"
 #include "size_model.hpp"
@@ -91,6 +93,8 @@ struct TurtleState {
   glm::dvec3 tropism{0.0};
   double elasticity = 0.0;
   std::int32_t last_segment = -1;
+  bool turns_swapped = false;  // Fractint's `!`
+  double gravity = 0.2;        // Lparser's `t`, in radians
 };
 
 class Interpreter {
@@ -154,6 +158,11 @@ class Interpreter {
       }
     }
     if (++modules_read_ > max_modules_) on_limit_();
+    if (params.empty() && symbol < grammar_.default_parameters.size() &&
+        grammar_.default_parameters[symbol]) {
+      params =
+          std::span<const double>(&*grammar_.default_parameters[symbol], 1);
+    }
     execute(grammar_.commands[symbol], params, generation);
   }
 
@@ -184,6 +193,32 @@ class Interpreter {
       case TurtleCommand::DrawNoVertex:
         draw(params, generation);
         return;
+      case TurtleCommand::DrawHalf: {
+        const double half = state_.step / 2;
+        draw(params.empty() ? std::span<const double>(&half, 1) : params,
+             generation);
+        return;
+      }
+      case TurtleCommand::MoveHalf:
+        turtle.move(params.empty() ? state_.step / 2 : params[0]);
+        state_.last_segment = -1;
+        add_vertex();
+        return;
+      case TurtleCommand::RandomTurn:
+        random_turn(params.empty() ? 180.0 : params[0]);
+        return;
+      case TurtleCommand::Gravity: {
+        // Lapré's L_draw turns the heading about left by tr times the
+        // length of its horizontal part, in radians: toward the ground
+        // once `$` has rolled the turtle upright.
+        if (!params.empty()) state_.gravity = params[0];
+        const glm::dvec3 h = turtle.heading();
+        const double horizontal = std::sqrt(h.x * h.x + h.y * h.y);
+        if (horizontal > 0.0) {
+          turtle.pitch(state_.gravity * horizontal * 180.0 / std::numbers::pi);
+        }
+        return;
+      }
       case TurtleCommand::Move:
         turtle.move(params.empty() ? state_.step : params[0]);
         state_.last_segment = -1;
@@ -194,10 +229,16 @@ class Interpreter {
         state_.last_segment = -1;
         return;
       case TurtleCommand::TurnLeft:
-        turtle.turn(angle(params));
+        turtle.turn(state_.turns_swapped ? -angle(params) : angle(params));
         return;
       case TurtleCommand::TurnRight:
+        turtle.turn(state_.turns_swapped ? angle(params) : -angle(params));
+        return;
+      case TurtleCommand::TurnRightFixed:
         turtle.turn(-angle(params));
+        return;
+      case TurtleCommand::SwapTurns:
+        state_.turns_swapped = !state_.turns_swapped;
         return;
       case TurtleCommand::PitchDown:
         turtle.pitch(angle(params));
@@ -217,6 +258,18 @@ class Interpreter {
       case TurtleCommand::RollToVertical:
         turtle.roll_to_vertical();
         return;
+      case TurtleCommand::RollToVerticalSwappingTurns: {
+        // Lparser's frame starts left-handed and its `$` rebuilds it
+        // right-handed; its turns are about its up vector, so from then on
+        // they turn the other way (pitches and rolls are about heading and
+        // left, which lsolid shares). A vertical heading is left alone.
+        const glm::dvec3 h = turtle.heading();
+        if (h.x != 0.0 || h.y != 0.0) {
+          turtle.roll_to_vertical();
+          state_.turns_swapped = true;
+        }
+        return;
+      }
       case TurtleCommand::Push:
         stack_.push_back(state_);
         return;
@@ -248,6 +301,16 @@ class Interpreter {
           state_.width *= settings_.width_factor;
         }
         return;
+      case TurtleCommand::Widen:
+        if (!params.empty()) {
+          state_.width = std::max(0.0, params[0] * settings_.width_scale);
+        } else if (settings_.width_increment) {
+          state_.width += *settings_.width_increment * settings_.width_scale;
+        } else {
+          if (settings_.width_factor > 0.0)
+            state_.width /= settings_.width_factor;
+        }
+        return;
       case TurtleCommand::ColorNext:
         state_.color = params.empty() ? next_color() : color_index(params[0]);
         return;
@@ -260,6 +323,21 @@ class Interpreter {
         return;
       case TurtleCommand::SetElasticity:
         state_.elasticity = params[0];
+        return;
+      case TurtleCommand::MultiplyStep:
+        if (!params.empty()) state_.step *= params[0];
+        return;
+      case TurtleCommand::MultiplyAngle:
+        if (!params.empty()) state_.angle_deg *= params[0];
+        return;
+      case TurtleCommand::MultiplyWidth:
+        if (!params.empty())
+          state_.width = std::max(0.0, state_.width * params[0]);
+        return;
+      case TurtleCommand::ColorAdd:
+        state_.color = color_index(static_cast<double>(state_.color) +
+                                   std::max(-static_cast<double>(state_.color),
+                                            params.empty() ? 1.0 : params[0]));
         return;
     }
   }
@@ -320,12 +398,31 @@ class Interpreter {
             " overflows: it is no longer a finite number");
   }
 
+  // Lparser's `~`: three rotations, about up, left and heading, each by
+  // an angle drawn uniformly from [-most, most] degrees. The numbers are
+  // keyed by the seed and the count of `~` so far, so a file draws the
+  // same every run (Lparser seeds with the time).
+  void random_turn(double most_deg) {
+    const std::uint64_t n = random_turns_++;
+    const auto angle = [&](std::uint64_t k) {
+      return (2.0 * stochastic_uniform(settings_.seed ^ 0x7E7A11ULL, n, k) -
+              1.0) *
+             most_deg;
+    };
+    state_.turtle.turn(angle(0));
+    state_.turtle.pitch(angle(1));
+    state_.turtle.roll(angle(2));
+  }
+
   void draw(std::span<const double> params, std::uint32_t generation) {
     Turtle& turtle = state_.turtle;
     const double length = params.empty() ? state_.step : params[0];
     const glm::dvec3 p0 = turtle.position();
     turtle.move(length);
-    const double start = generation_width(state_.width, generation);
+    // Lparser's widths are a fraction of the segment's own length.
+    const double scale =
+        settings_.widths_relative_to_length ? std::fabs(length) : 1.0;
+    const double start = generation_width(state_.width, generation) * scale;
     if (params.size() > 1) {
       state_.width = std::max(0.0, params[1] * settings_.width_scale);
     }
@@ -337,8 +434,8 @@ class Interpreter {
     if (moved) {
       skeleton_.segments.push_back(
           Segment{p0, turtle.position(), start,
-                  generation_width(state_.width, generation), state_.color,
-                  state_.last_segment});
+                  generation_width(state_.width, generation) * scale,
+                  state_.color, state_.last_segment});
       state_.last_segment =
           static_cast<std::int32_t>(skeleton_.segments.size() - 1);
     }
@@ -389,6 +486,7 @@ class Interpreter {
   std::vector<std::vector<double>> buffers_;
   Skeleton skeleton_;
   std::uint64_t modules_read_ = 0;
+  std::uint64_t random_turns_ = 0;
   std::uint64_t max_modules_ = std::numeric_limits<std::uint64_t>::max();
   std::function<void()> on_limit_;
 };

@@ -17,7 +17,8 @@ namespace lsys {
 namespace {
 
 bool is_drawing(TurtleCommand c) {
-  return c == TurtleCommand::Draw || c == TurtleCommand::DrawNoVertex;
+  return c == TurtleCommand::Draw || c == TurtleCommand::DrawNoVertex ||
+         c == TurtleCommand::DrawHalf;
 }
 
 bool is_deterministic(const Grammar& g) {

@@ -8,10 +8,11 @@
 namespace lsys {
 namespace {
 
-// ABOP p. 209 and the cpfg manual for the single characters; `∧` and `−`
+// ABOP p. 209 and the cpfg manual for the single characters (cpfg's `#`
+// widens as its `!` narrows); `∧` and `−`
 // (U+2212) are how seed 000 and typeset ABOP print `^` and `-`; `@v`, `@Tp`,
 // `@Ts` are L-Py's and cpfg's spellings.
-constexpr std::array<std::pair<std::string_view, TurtleCommand>, 28> kNames{{
+constexpr std::array<std::pair<std::string_view, TurtleCommand>, 29> kNames{{
     {"F", TurtleCommand::Draw},
     {"f", TurtleCommand::Move},
     {"G", TurtleCommand::DrawNoVertex},
@@ -33,6 +34,7 @@ constexpr std::array<std::pair<std::string_view, TurtleCommand>, 28> kNames{{
     {".", TurtleCommand::PolygonVertex},
     {"}", TurtleCommand::PolygonEnd},
     {"!", TurtleCommand::Width},
+    {"#", TurtleCommand::Widen},
     {"'", TurtleCommand::ColorNext},
     {";", TurtleCommand::ColorNext},
     {",", TurtleCommand::ColorPrevious},
@@ -62,12 +64,13 @@ int max_parameters(TurtleCommand command) noexcept {
       return 3;
     case TurtleCommand::TurnAround:
     case TurtleCommand::RollToVertical:
+    case TurtleCommand::RollToVerticalSwappingTurns:
     case TurtleCommand::Push:
     case TurtleCommand::Pop:
     case TurtleCommand::PolygonBegin:
     case TurtleCommand::PolygonVertex:
-    case TurtleCommand::PolygonEnd:
     case TurtleCommand::Cut:
+    case TurtleCommand::SwapTurns:
       return 0;
     default:
       return 1;

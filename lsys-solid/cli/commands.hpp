@@ -27,6 +27,8 @@ struct GrammarInput {
   std::optional<std::string> max_modules;
   std::optional<std::string> max_memory;  ///< in MiB
   std::optional<std::string> roll;
+  std::optional<std::string> dialect;  ///< --dialect
+  std::string system;                  ///< --system
 };
 
 /// A whole number typed for an option: decimal digits only, from `least` to

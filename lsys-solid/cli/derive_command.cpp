@@ -34,6 +34,15 @@ void add_grammar_options(CLI::App& command, GrammarInput& input, bool with_roll,
       .add_option("--define", input.defines,
                   "NAME=VALUE: set a constant, overriding #define")
       ->allow_extra_args(false);
+  command
+      .add_option("--dialect", input.dialect,
+                  "the file's notation: ls, lparser, fractint or lpy "
+                  "(default: detected from the file)")
+      ->check(CLI::IsMember({"ls", "lparser", "fractint", "lpy"}));
+  command
+      .add_option("--system", input.system,
+                  "in a file of several systems (Fractint), the one to read")
+      ->type_name("NAME");
   const lsys::DerivationOptions defaults;
   command
       .add_option("--max-segments", input.max_segments,
@@ -63,7 +72,11 @@ lsys::Grammar load_grammar(const GrammarInput& input) {
   lsys::Grammar grammar = lsys::parse_grammar(
       lsys::load_source(input.file),
       lsys::ParseOptions{.defines = input.defines,
-                         .extra_settings = print_setting_names()});
+                         .extra_settings = print_setting_names(),
+                         .dialect = input.dialect
+                                        ? lsys::dialect_named(*input.dialect)
+                                        : std::nullopt,
+                         .system = input.system});
   for (const std::string& warning : grammar.warnings) {
     std::fprintf(stderr, "warning: %s\n", warning.c_str());
   }

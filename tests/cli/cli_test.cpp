@@ -927,7 +927,10 @@ TEST_P(Catalogue, GivesItsGoldenErrorAndLeavesTheOutputUntouched) {
   std::filesystem::copy_file(kDiagnostics / c.file, dir / c.file);
   const std::string kept = "keep me: " + stem.string() + "\n";
   { std::ofstream(dir / "out.stl", std::ios::binary) << kept; }
-  const bool is_ls = std::filesystem::path(c.file).extension() == ".ls";
+  const std::string extension = std::filesystem::path(c.file).extension();
+  // L-systems in any notation are built; meshes are checked.
+  const bool is_ls =
+      extension == ".ls" || extension == ".l" || extension == ".lpy";
   const std::string command =
       is_ls ? lsolid() + " " + c.file + " " + c.options + " -o out.stl"
             : lsolid() + " check " + c.file + " " + c.options;

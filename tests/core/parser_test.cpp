@@ -428,5 +428,26 @@ TEST(Parser, ReportsEachMistakeWithItsOwnMessage) {
             "modules before the productions");
 }
 
+TEST(Parser, ReadsCpfgsWidenAsTheOppositeOfItsNarrow) {
+  const Skeleton s =
+      interpret(parse("width: 1\nwidth increment: 0.25\nF#F!F#(3)F\nn=0"));
+  ASSERT_EQ(s.segments.size(), 4U);
+  EXPECT_DOUBLE_EQ(s.segments[0].start_diameter, 1.0);
+  EXPECT_DOUBLE_EQ(s.segments[1].start_diameter, 1.25);
+  EXPECT_DOUBLE_EQ(s.segments[2].start_diameter, 1.0);
+  EXPECT_DOUBLE_EQ(s.segments[3].start_diameter, 3.0);
+}
+
+TEST(Parser, KeepsCpfgsAtModulesWholeAndRefusesThoseItCannotBuild) {
+  const Grammar g = parse("@GsF@Gc(4)F@Ge\nn=0");
+  EXPECT_EQ(to_string(derive(g), g.alphabet), "@Gs F @Gc(4) F @Ge");
+  EXPECT_EQ(interpret(g).segments.size(), 2U);
+  EXPECT_EQ(located_error("F[@O(2)]\nn=0"),
+            "1:3: '@O' (a sphere) is not supported by lsolid");
+  EXPECT_EQ(located_error("F~l(0.5)\nn=0"),
+            "1:2: '~' (a predefined surface in cpfg, a random turn in "
+            "Houdini) is not supported by lsolid");
+}
+
 }  // namespace
 }  // namespace lsys

@@ -127,6 +127,10 @@ struct Grammar {
   std::vector<Production> homomorphisms;
   /// The turtle command of each symbol after aliases.
   std::vector<TurtleCommand> commands;
+  /// Per symbol, the parameter its command takes when the module has none,
+  /// where the notation gives one (Lparser's `'` multiplies the length by
+  /// 0.9); empty or absent means the command's own default.
+  std::vector<std::optional<double>> default_parameters;
   Settings settings;
   /// `#define` and `--define` values.
   std::map<std::string, double> constants;

@@ -3,10 +3,12 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "lsys/dialect.hpp"
 #include "lsys/grammar.hpp"
 #include "lsys/source.hpp"
 
@@ -20,9 +22,15 @@ struct ParseOptions {
   /// Keys of settings that a client interprets itself (lsys-solid's print
   /// settings); they are returned in Grammar::extra_settings.
   std::vector<std::string> extra_settings;
+  /// The notation; detected from the text (detect_dialect) when unset.
+  std::optional<Dialect> dialect;
+  /// In a file of several systems (Fractint), the one to read, by name
+  /// without regard to case; empty reads the only one, or refuses to choose.
+  std::string system;
 };
 
-/// Reads a `.ls` file (docs/language.md).
+/// Reads an L-system file in any notation lsolid knows (docs/language.md,
+/// docs/dialects/).
 /// @throws ParseError with file, line and column for any malformed input.
 [[nodiscard]] Grammar parse_grammar(std::shared_ptr<const SourceFile> source,
                                     const ParseOptions& options = {});

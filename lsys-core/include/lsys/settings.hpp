@@ -49,6 +49,9 @@ struct Settings {
   /// Diameter lost per derivation step that created a module (seed 001's
   /// "branch radius reduction", doubled).
   double width_decrement_per_generation = 0.0;
+  /// Widths are fractions of each segment's own length (Lparser's
+  /// thickness, a percentage of the length), not lengths.
+  bool widths_relative_to_length = false;
   int initial_color = 0;
   glm::dvec3 tropism{0.0, 0.0, -1.0};  ///< T, world coordinates (Z up)
   double elasticity = 0.0;             ///< e; 0 turns tropism off

@@ -29,11 +29,23 @@ enum class TurtleCommand {
   PolygonVertex,   ///< `.`
   PolygonEnd,      ///< `}`
   Width,           ///< `!`: set the width, or apply the width rule
+  Widen,           ///< L-Py `_`: set the width, or add the increment
   ColorNext,       ///< `'` and `;`: next colour index, or set it
   ColorPrevious,   ///< `,`: previous colour index, or set it
   Cut,             ///< `%`: cut the rest of the branch (while deriving)
   SetTropism,      ///< `@Tp(x,y,z)`: the tropism vector
   SetElasticity,   ///< `@Ts(e)`: the elasticity
+  MultiplyStep,    ///< Lparser `"` `'`, Fractint `@`: step length × p
+  MultiplyAngle,   ///< Lparser `;` `:`: δ × p
+  MultiplyWidth,   ///< Lparser `?` `!`: width × p
+  SwapTurns,       ///< Fractint `!`: `+` and `-` trade meanings
+  TurnRightFixed,  ///< Fractint `|`: right by p degrees, whatever `!` says
+  ColorAdd,        ///< Fractint `<nn` `>nn`: colour index + p, at least 0
+  DrawHalf,        ///< Lparser `Z`: draw half a step, never a vertex
+  MoveHalf,        ///< Lparser `z`: move half a step; a vertex in `{ }`
+  RandomTurn,      ///< Lparser `~`: turn, pitch, roll at random, ±p degrees
+  Gravity,         ///< Lparser `t`: pitch down by p × |horizontal heading|
+  RollToVerticalSwappingTurns,  ///< Lparser `$`: `$`, then `+` `-` swapped
 };
 
 /// The command a module name has without aliases, if it has one.

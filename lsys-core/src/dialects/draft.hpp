@@ -1,0 +1,145 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+#include "dialects/text_scan.hpp"
+#include "lsys/settings.hpp"
+#include "lsys/turtle_command.hpp"
+
+namespace lsys::dialects {
+
+/// Where a production goes.
+enum class Section { Productions, Decomposition, Homomorphism, Aliases };
+
+/// The settings a front end can hand over as text.
+enum class Key {
+  Axiom,
+  DerivationLength,
+  Angle,
+  AngleFactor,
+  Step,
+  Width,
+  Radius,
+  WidthIncrement,
+  WidthFactor,
+  WidthScale,
+  WidthPerGeneration,
+  RadiusPerGeneration,
+  Color,
+  Tropism,
+  Elasticity,
+  Seed,
+  Roll,
+  MaximumDepth,
+  Ignore,
+  Consider,
+  LsystemLabel,
+  Extra
+};
+
+/// A setting as written: its key, where the key and the value stand.
+struct SettingText {
+  Key key;
+  std::string extra_key;  ///< the client's name, for Key::Extra
+  Range key_range;
+  Range value;
+};
+
+/// A production as written, before the successor is read.
+struct ProductionText {
+  Range lhs;
+  std::optional<Range> probability;  ///< ABOP's -(p)→
+  std::vector<Range> rhs;            ///< continuation lines append
+  Section section = Section::Productions;
+};
+
+/// A name of a `module` line, and the parameter count its list gives.
+struct DeclaredName {
+  Range name;
+  int parameter_count = 0;  ///< of `bud(x)`; 0 without a list
+};
+
+/// A module's name and the command it has in a notation.
+struct SymbolCommand {
+  std::string_view name;
+  TurtleCommand command;
+  /// The parameter a bare module has in this notation (Lparser's `'`
+  /// multiplies the length by 0.9); none when the command has its own.
+  std::optional<double> default_parameter;
+};
+
+/// A module a notation names but lsolid cannot build (L-Py's `@O`
+/// sphere): refused where it stands rather than split into letters.
+struct RefusedName {
+  std::string_view name;
+  std::string_view what;  ///< "a sphere"
+};
+
+/// A parameter written without parentheses, as Fractint writes `\30` and
+/// `C5`: where its text ends and its value.
+struct InlineParameter {
+  std::size_t end;
+  double value;
+};
+
+/// What the notation's productions and modules may hold beyond a
+/// predecessor and a string of single-character modules.
+struct Syntax {
+  /// `lc < pred > rc : condition` on the left of the arrow; without them
+  /// the left side is the predecessor as written (Lparser's `<` rolls).
+  bool contexts_and_conditions = true;
+  /// cpfg's `succ : probability` (Lparser's `:` scales the angle).
+  bool probability_after_successor = true;
+  /// `F(1, 2)`; without them `(` and `)` are modules (Fractint).
+  bool parameter_lists = true;
+  /// `%` cuts the branch and `*` is any module in a context; without them
+  /// both are modules of the notation's table (Lparser's `%` rolls 180°).
+  bool cut_and_wildcard = true;
+};
+
+/// What a front end hands the grammar builder: the pieces of a file sorted
+/// by what they are, as places in the scanned text, and what the notation
+/// itself decides (its symbols and defaults).
+struct Draft {
+  std::optional<Range> axiom;
+  std::vector<ProductionText> productions;
+  std::vector<SettingText> settings;
+  std::vector<std::pair<Range, Range>> defines;  ///< name, value
+  std::vector<Range> module_lines;               ///< after `module`
+  std::vector<Range> alias_lines;                ///< `f=F`, `.ls` only
+  /// Names of `module` lines, known while sorting lines.
+  std::unordered_set<std::string> declared_modules;
+  Syntax syntax;
+  /// The notation's settings before the file changes any.
+  Settings defaults;
+  /// The notation's symbols; when empty, lsolid's (builtin_command).
+  std::vector<SymbolCommand> symbols;
+  /// Names the notation defines before the file does (L-Py's `True`).
+  std::map<std::string, double> constants;
+  /// Modules refused wherever they appear.
+  std::vector<RefusedName> refused;
+  /// Things the front end left out, for the caller to show.
+  std::vector<std::string> warnings;
+  /// Reads a parameter written without parentheses after a module name at
+  /// `at`, if the notation has such and one stands there.
+  std::function<std::optional<InlineParameter>(std::string_view name,
+                                               std::size_t at, Range r)>
+      inline_parameter;
+};
+
+/// The names of a `module` line: `plant, internode seg, bud(x)`.
+/// @throws ParseError for an unclosed `(`.
+[[nodiscard]] std::vector<DeclaredName> module_names(const TextScan& scan,
+                                                     Range names);
+
+}  // namespace lsys::dialects

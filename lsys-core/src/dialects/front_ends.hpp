@@ -1,0 +1,35 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <memory>
+
+#include "lsys/grammar.hpp"
+#include "lsys/parser.hpp"
+#include "lsys/source.hpp"
+
+namespace lsys::dialects {
+
+/// Reads lsolid's own notation (docs/language.md).
+/// @throws ParseError at the place of anything malformed.
+[[nodiscard]] Grammar read_ls(std::shared_ptr<const SourceFile> source,
+                              const ParseOptions& options);
+
+/// Reads Laurens Lapré's Lparser files (docs/dialects/lparser.md).
+/// @throws ParseError as read_ls.
+[[nodiscard]] Grammar read_lparser(std::shared_ptr<const SourceFile> source,
+                                   const ParseOptions& options);
+
+/// Reads one system of a Fractint `.l` file (docs/dialects/fractint.md),
+/// the one ParseOptions::system names or the only one.
+/// @throws ParseError as read_ls, and when the file holds several systems
+///   and none is named.
+[[nodiscard]] Grammar read_fractint(std::shared_ptr<const SourceFile> source,
+                                    const ParseOptions& options);
+
+/// Reads the declarative part of an L-Py file (docs/dialects/lpy.md).
+/// @throws ParseError as read_ls, and at Python code in a rule.
+[[nodiscard]] Grammar read_lpy(std::shared_ptr<const SourceFile> source,
+                               const ParseOptions& options);
+
+}  // namespace lsys::dialects

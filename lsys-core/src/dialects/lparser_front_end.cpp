@@ -1,0 +1,218 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// Laurens Lapré's Lparser, the DOS versions 4 and 5 (what each symbol does,
+// and where that is documented: docs/dialects/lparser.md). Its files have
+// lines starting with `#` are comments; three numbers, the recursion
+// depth, the angle in degrees and the thickness as a percentage of each
+// segment's length; the axiom; rules `X=successor`, the first for a
+// character winning; `@` ends the file. Only the first word of a line
+// counts, so a comment may follow it. Parameters belong to the text, not
+// to the module: a rule for `f` rewrites `f(200)` too, and the `(200)`
+// stays behind its successor (`f=z` makes `z(200)`).
+#include <cmath>
+#include <cstdlib>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "dialects/front_ends.hpp"
+#include "dialects/grammar_builder.hpp"
+#include "lsys/expression.hpp"
+
+namespace lsys::dialects {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Lparser's turtle (Lapré's L_draw, as its descendants keep it). `F` and
+// `Z` never add a polygon vertex, `f`, `z` and `.` do. The bare factors:
+// 0.9 for length and angle, 0.7 for thickness, and their inverses. A bare
+// `~` turns up to 6 (radians, as the code has it), `t` bends by 0.2.
+const std::vector<SymbolCommand> kSymbols = {
+    {"F", TurtleCommand::DrawNoVertex, std::nullopt},
+    {"Z", TurtleCommand::DrawHalf, std::nullopt},
+    {"f", TurtleCommand::Move, std::nullopt},
+    {"z", TurtleCommand::MoveHalf, std::nullopt},
+    {"g", TurtleCommand::MoveNoVertex, std::nullopt},
+    {".", TurtleCommand::PolygonVertex, std::nullopt},
+    {"+", TurtleCommand::TurnLeft, std::nullopt},
+    {"-", TurtleCommand::TurnRight, std::nullopt},
+    {"&", TurtleCommand::PitchDown, std::nullopt},
+    {"^", TurtleCommand::PitchUp, std::nullopt},
+    {"<", TurtleCommand::RollLeft, std::nullopt},
+    {">", TurtleCommand::RollRight, std::nullopt},
+    {"|", TurtleCommand::TurnAround, std::nullopt},
+    {"%", TurtleCommand::RollRight, 180.0},
+    {"$", TurtleCommand::RollToVerticalSwappingTurns, std::nullopt},
+    {"~", TurtleCommand::RandomTurn, 6.0 * 180.0 / kPi},
+    {"t", TurtleCommand::Gravity, std::nullopt},
+    {"'", TurtleCommand::MultiplyStep, 0.9},
+    {"\"", TurtleCommand::MultiplyStep, 1.0 / 0.9},
+    {":", TurtleCommand::MultiplyAngle, 0.9},
+    {";", TurtleCommand::MultiplyAngle, 1.0 / 0.9},
+    {"!", TurtleCommand::MultiplyWidth, 0.7},
+    {"?", TurtleCommand::MultiplyWidth, 1.0 / 0.7},
+    {"c", TurtleCommand::ColorNext, std::nullopt},
+    {"[", TurtleCommand::Push, std::nullopt},
+    {"]", TurtleCommand::Pop, std::nullopt},
+    {"{", TurtleCommand::PolygonBegin, std::nullopt},
+    {"}", TurtleCommand::PolygonEnd, std::nullopt},
+};
+
+// Lparser's `F` is 100 units long and its colour starts at 2 (red in
+// Lviewer's palette).
+constexpr double kStep = 100.0;
+constexpr int kColor = 2;
+
+// Blanks `#` comment lines, everything after a line's first word, and
+// everything after the line that starts with `@`, keeping offsets.
+std::string clean_text(const std::string& text) {
+  std::string out = text;
+  bool ended = false;
+  std::size_t start = 0;
+  while (start < out.size()) {
+    std::size_t end = out.find('\n', start);
+    if (end == std::string::npos) end = out.size();
+    std::size_t i = start;
+    while (i < end && (out[i] == ' ' || out[i] == '\t')) ++i;
+    const bool comment = start < end && out[start] == '#';
+    if (!ended && !comment && i < end && out[i] == '@') ended = true;
+    if (ended || comment) {
+      i = start;
+    } else {
+      while (i < end && out[i] != ' ' && out[i] != '\t' && out[i] != '#' &&
+             out[i] != '\r') {
+        ++i;
+      }
+    }
+    for (; i < end; ++i) out[i] = ' ';
+    start = end + 1;
+  }
+  return out;
+}
+
+class LparserReader : TextScan {
+ public:
+  LparserReader(std::shared_ptr<const SourceFile> source,
+                const ParseOptions& options)
+      : TextScan(source, clean_text(source->text())), options_(options) {}
+
+  Grammar run() {
+    std::vector<Range> words;
+    for (const Range& line : lines(Range{0, text_.size()})) {
+      const Range word = trim(line);
+      if (!word.empty()) words.push_back(word);
+    }
+    const char* const header[] = {"the recursion depth", "the angle",
+                                  "the thickness (a percentage of length)"};
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (k >= words.size()) {
+        fail(text_.size(), std::string("expected ") + header[k] +
+                               " on a line of its own: an Lparser file "
+                               "starts with three numbers");
+      }
+    }
+    Draft draft;
+    Settings& s = draft.defaults;
+    const double depth = number(words[0], header[0]);
+    if (depth < 0 || depth > 10000 || depth != std::floor(depth)) {
+      fail(words[0].begin,
+           depth != std::floor(depth)
+               ? "a fractional recursion depth (Lparser's growing mode) is "
+                 "not supported: give a whole number"
+               : "expected a whole number from 0 to 10000");
+    }
+    s.derivation_length = static_cast<int>(depth);
+    s.derivation_length_offset = words[0].begin;
+    s.angle_deg = number(words[1], header[1]);
+    const double thickness = number(words[2], header[2]);
+    if (thickness < 0) fail(words[2].begin, "expected a non-negative number");
+    s.initial_width = thickness / 100.0;
+    s.widths_relative_to_length = true;
+    s.step = kStep;
+    s.initial_color = kColor;
+    if (words.size() < 4) {
+      fail(words[2].end, "expected the axiom after the three numbers");
+    }
+    draft.axiom = words[3];
+    for (std::size_t k = 4; k < words.size(); ++k) {
+      const Range rule = words[k];
+      if (rule.end - rule.begin < 2 || text_[rule.begin + 1] != '=') {
+        fail(rule.begin,
+             "expected a rule such as 'F=FF' (one character, '=', the "
+             "successor, no blanks) or '@' to end the file");
+      }
+      draft.productions.push_back(
+          ProductionText{Range{rule.begin, rule.begin + 1},
+                         std::nullopt,
+                         {Range{rule.begin + 2, rule.end}}});
+    }
+    draft.syntax = Syntax{.contexts_and_conditions = false,
+                          .probability_after_successor = false,
+                          .parameter_lists = true,
+                          .cut_and_wildcard = false};
+    draft.symbols = kSymbols;
+    Grammar grammar = build_grammar(*this, std::move(draft), options_);
+    pass_parameters_on(grammar);
+    return grammar;
+  }
+
+ private:
+  double number(Range word, const char* what) const {
+    const std::string text(view(word));
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (end == text.c_str() || *end != '\0' || !std::isfinite(value)) {
+      fail(word.begin,
+           std::string("expected ") + what + ", a number on a line of its own");
+    }
+    return value;
+  }
+
+  // In Lparser a module's `(x)` is text behind it, which a rule for the
+  // module leaves behind its successor: `f=z` turns `f(200)` into
+  // `z(200)`, and the last module of the successor reads it if it can.
+  // So each rule of a module without parameters gets a twin for the
+  // module with one, whose successor hands it to its last module where
+  // that module has none of its own.
+  void pass_parameters_on(Grammar& grammar) const {
+    const auto slot_source = std::make_shared<const SourceFile>("x", "x");
+    const Expression slot = parse_expression(
+        slot_source, 0, 1, ExpressionScope{.parameters = {"x"}});
+    std::vector<Production> twins;
+    for (const Production& p : grammar.productions) {
+      if (p.predecessor.parameter_count != 0) continue;
+      Production twin = p;
+      twin.predecessor.parameter_count = 1;
+      Successor successor;
+      const std::size_t n = p.successor.size();
+      for (std::size_t i = 0; i < n; ++i) {
+        const SymbolId symbol = p.successor.symbols()[i];
+        const auto parameters = p.successor.parameters(i);
+        std::vector<Expression> values(parameters.begin(), parameters.end());
+        const TurtleCommand command = grammar.commands[symbol];
+        if (i + 1 == n && values.empty() && max_parameters(command) >= 1) {
+          values.push_back(slot);
+        }
+        successor.push_back(symbol, std::move(values), p.successor.offset(i));
+      }
+      twin.successor = std::move(successor);
+      twins.push_back(std::move(twin));
+    }
+    for (Production& twin : twins) {
+      grammar.productions.push_back(std::move(twin));
+    }
+  }
+
+  const ParseOptions& options_;
+};
+
+}  // namespace
+
+Grammar read_lparser(std::shared_ptr<const SourceFile> source,
+                     const ParseOptions& options) {
+  return LparserReader(std::move(source), options).run();
+}
+
+}  // namespace lsys::dialects

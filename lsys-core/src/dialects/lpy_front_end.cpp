@@ -1,0 +1,364 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// The declarative part of L-Py (openalea/lpy: its parser lpy_parser.cpp and
+// its symbol table predefinedmodules.cpp; PlantGL's turtle for defaults;
+// docs/dialects/lpy.md). An L-Py file is Python with L-system sections.
+// lsolid reads the sections (`Axiom:`, `derivation length:`,
+// `production:`, `decomposition:`, `interpretation:`/`homomorphism:`,
+// `maximum depth:`, `endlsystem`, `module`, `ignore:`/`consider:`, rules
+// `pred --> succ`) and, of the Python, the assignments of constants
+// (`angle = 30`, `extern(a=1)`) and the turtle's settings
+// (`context().turtle.setAngleIncrement(90)`). Any other Python, above all
+// a rule whose body is Python (`produce`, `if`), is refused at its line:
+// lsolid does not run Python.
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "dialects/front_ends.hpp"
+#include "dialects/grammar_builder.hpp"
+
+namespace lsys::dialects {
+namespace {
+
+// PlantGL's turtle as L-Py drives it. `f` is never a polygon vertex (only
+// `F` and `.` are); `G` and `g` are not turtle modules in L-Py; `_` and
+// `!` widen and narrow by the width increment, or set the width; `$` is a
+// pattern module, not cpfg's roll.
+const std::vector<SymbolCommand> kSymbols = {
+    {"F", TurtleCommand::Draw, std::nullopt},
+    {"f", TurtleCommand::MoveNoVertex, std::nullopt},
+    {"+", TurtleCommand::TurnLeft, std::nullopt},
+    {"-", TurtleCommand::TurnRight, std::nullopt},
+    {"&", TurtleCommand::PitchDown, std::nullopt},
+    {"^", TurtleCommand::PitchUp, std::nullopt},
+    {"/", TurtleCommand::RollRight, std::nullopt},
+    {"\\", TurtleCommand::RollLeft, std::nullopt},
+    {"|", TurtleCommand::TurnAround, std::nullopt},
+    {"[", TurtleCommand::Push, std::nullopt},
+    {"]", TurtleCommand::Pop, std::nullopt},
+    {"{", TurtleCommand::PolygonBegin, std::nullopt},
+    {".", TurtleCommand::PolygonVertex, std::nullopt},
+    {"}", TurtleCommand::PolygonEnd, std::nullopt},
+    {"_", TurtleCommand::Widen, std::nullopt},
+    {"!", TurtleCommand::Width, std::nullopt},
+    {"SetWidth", TurtleCommand::Width, std::nullopt},
+    {";", TurtleCommand::ColorNext, std::nullopt},
+    {",", TurtleCommand::ColorPrevious, std::nullopt},
+    {"SetColor", TurtleCommand::ColorNext, std::nullopt},
+    {"%", TurtleCommand::Cut, std::nullopt},
+    {"@v", TurtleCommand::RollToVertical, std::nullopt},
+    {"@Ts", TurtleCommand::SetElasticity, std::nullopt},
+    {"@Tp", TurtleCommand::SetTropism, std::nullopt},
+    // A generalized cylinder joins its segments into one smooth tube,
+    // which lsolid's joined tubes already are; a frame is a drawing aid.
+    {"@Gc", TurtleCommand::None, std::nullopt},
+    {"@Ge", TurtleCommand::None, std::nullopt},
+    {"Frame", TurtleCommand::None, std::nullopt},
+};
+
+// L-Py modules lsolid knows by name but cannot build: refused where they
+// stand rather than split into letters.
+const std::vector<RefusedName> kRefused = {
+    {"@O", "a sphere"},
+    {"@o", "a circle"},
+    {"@B", "a box"},
+    {"@b", "a quad"},
+    {"@L", "a label"},
+    {"@M", "a move to a point"},
+    {"@R", "setting the heading"},
+    {"@h", "a roll to horizontal"},
+    {"@D", "a scale"},
+    {"@Di", "a scale"},
+    {"@Dd", "a scale"},
+    {"@g", "a PlantGL shape"},
+    {"~", "a predefined surface"},
+    {"nF", "a path of steps"},
+    {"$", "a pattern module"},
+    {"LineTo", "a line to a point"},
+    {"MoveTo", "a move to a point"},
+    {"MoveRel", "a move"},
+    {"LineRel", "a line"},
+    {"Pinpoint", "an orientation"},
+    {"EulerAngles", "an orientation"},
+    {"Sweep", "a swept surface"},
+    {"SetGuide", "a guide curve"},
+    {"SetContour", "a contour"},
+    {"Label", "a label"},
+};
+
+// Blanks `#` comments to the end of the line (outside strings), keeping
+// offsets.
+std::string clean_text(const std::string& text) {
+  std::string out = text;
+  char quote = 0;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const char c = out[i];
+    if (c == '\n') quote = 0;
+    if (quote != 0) {
+      if (c == quote) quote = 0;
+      continue;
+    }
+    if (c == '\'' || c == '"') {
+      // An apostrophe inside an L-string is a module, not a quote; only a
+      // quote after `=`, `(` or `,` opens a Python string.
+      std::size_t j = i;
+      while (j > 0 && (out[j - 1] == ' ' || out[j - 1] == '\t')) --j;
+      if (j > 0 &&
+          (out[j - 1] == '=' || out[j - 1] == '(' || out[j - 1] == ',')) {
+        quote = c;
+      }
+      continue;
+    }
+    if (c == '#') {
+      for (; i < out.size() && out[i] != '\n'; ++i) out[i] = ' ';
+      if (i < out.size()) --i;
+    }
+  }
+  return out;
+}
+
+constexpr std::string_view kInitialisation = "###### INITIALISATION ######";
+
+class LpyReader : TextScan {
+ public:
+  LpyReader(std::shared_ptr<const SourceFile> source,
+            const ParseOptions& options)
+      : TextScan(source, clean_text(source->text())), options_(options) {}
+
+  Grammar run() {
+    // The editor's trailing block (materials, options) is not the model.
+    std::size_t end = source_->text().find(kInitialisation);
+    if (end == std::string::npos) end = text_.size();
+    for (const Range& line : lines(Range{0, end})) read_line(line);
+    Settings& s = draft_.defaults;
+    s.angle_deg = 60.0;
+    s.step = 1.0;
+    s.initial_width = 0.1;
+    s.width_scale = 2.0;  // L-Py's widths are radii
+    s.width_increment = 1.0;
+    s.initial_color = 1;
+    s.tropism = glm::dvec3(0.0, 0.0, 1.0);
+    s.roll = RollConvention::Lpfg;
+    draft_.symbols = kSymbols;
+    draft_.refused = kRefused;
+    draft_.warnings = std::move(grammar_warnings_);
+    draft_.constants = {
+        {"True", 1.0}, {"False", 0.0}, {"pi", 3.14159265358979323846}};
+    return build_grammar(*this, std::move(draft_), options_);
+  }
+
+ private:
+  enum class Mode { Python, Rules, Skipped };
+
+  bool starts_line(Range line, std::string_view keyword,
+                   Range* rest = nullptr) const {
+    const auto end = match_words(line.begin, line.end, keyword);
+    if (!end) return false;
+    std::size_t pos = *end;
+    while (pos < line.end && is_blank(text_[pos])) ++pos;
+    if (keyword.back() != ':' && pos < line.end && text_[pos] != ':') {
+      return false;
+    }
+    if (keyword.back() != ':' && pos < line.end) ++pos;
+    if (rest != nullptr) *rest = trim(Range{pos, line.end});
+    return true;
+  }
+
+  [[noreturn]] void refuse_python(std::size_t at, std::string_view what) const {
+    fail(at, std::string(what) +
+                 ": this is Python code, and lsolid does not run Python; it "
+                 "reads the declarative part of L-Py (docs/dialects/lpy.md)");
+  }
+
+  void read_line(Range raw) {
+    const Range line = trim(raw);
+    if (line.empty()) return;
+    const bool indented = line.begin > raw.begin;
+    Range rest;
+    if (starts_line(line, "endlsystem")) {
+      mode_ = Mode::Python;
+      return;
+    }
+    for (const auto& [keyword, section] :
+         {std::pair{"production", Section::Productions},
+          std::pair{"decomposition", Section::Decomposition},
+          std::pair{"interpretation", Section::Homomorphism},
+          std::pair{"homomorphism", Section::Homomorphism}}) {
+      if (!indented && starts_line(line, keyword, &rest) && rest.empty()) {
+        mode_ = Mode::Rules;
+        section_ = section;
+        return;
+      }
+    }
+    if (!indented && starts_line(line, "axiom", &rest)) {
+      if (rest.empty()) {
+        refuse_python(line.begin, "an axiom built by Python statements");
+      }
+      if (draft_.axiom) fail(line.begin, "a second axiom");
+      draft_.axiom = rest;
+      return;
+    }
+    if (!indented && starts_line(line, "derivation length", &rest)) {
+      setting(Key::DerivationLength, line, rest);
+      return;
+    }
+    if (!indented && starts_line(line, "maximum depth", &rest)) {
+      if (mode_ != Mode::Rules || section_ == Section::Productions) {
+        fail(line.begin,
+             "'maximum depth:' belongs in a decomposition or "
+             "interpretation section");
+      }
+      setting(Key::MaximumDepth, line, rest);
+      return;
+    }
+    for (const auto& [keyword, key] : {std::pair{"ignore", Key::Ignore},
+                                       std::pair{"consider", Key::Consider}}) {
+      if (!indented && starts_line(line, keyword, &rest)) {
+        setting(key, line, rest);
+        return;
+      }
+    }
+    if (!indented) {
+      for (std::string_view keyword : {"module ", "modules "}) {
+        if (view(line).starts_with(keyword)) {
+          Range names = trim(Range{line.begin + keyword.size(), line.end});
+          if (const std::size_t colon = find_top(names, ":");
+              colon != std::string::npos) {
+            names.end = colon;  // `module A : scale = 2`
+          }
+          if (find_equals(names) != std::string::npos) {
+            draft_.alias_lines.push_back(names);  // `module A = F`
+            return;
+          }
+          draft_.module_lines.push_back(names);
+          for (const DeclaredName& d : module_names(*this, names)) {
+            draft_.declared_modules.insert(std::string(view(d.name)));
+          }
+          return;
+        }
+      }
+    }
+    if (mode_ == Mode::Skipped) {
+      if (starts_line(line, "endgroup")) mode_ = Mode::Rules;
+      return;
+    }
+    if (mode_ == Mode::Rules) {
+      read_rule(line, indented);
+    } else {
+      read_python(line, indented);
+    }
+  }
+
+  void setting(Key key, Range line, Range value) {
+    draft_.settings.push_back(
+        SettingText{key, {}, Range{line.begin, value.begin}, value});
+  }
+
+  void read_rule(Range line, bool indented) {
+    if (view(line).starts_with("group ")) {
+      // Rules of group n > 0 apply only when Python calls useGroup(n).
+      const std::string_view text = view(line);
+      if (!text.starts_with("group 0")) {
+        mode_ = Mode::Skipped;
+        grammar_warnings_.push_back("rules of '" + std::string(text) +
+                                    "' are left out: they apply only when "
+                                    "Python code selects their group");
+      }
+      return;
+    }
+    if (starts_line(line, "endgroup")) return;
+    if (indented) refuse_python(line.begin, "an indented rule body");
+    if (view(line).starts_with("def ")) {
+      refuse_python(line.begin, "a function definition");
+    }
+    const std::size_t arrow = find_top(line, "-->");
+    const std::size_t colon = find_top(line, ":");
+    if (colon != std::string::npos &&
+        (arrow == std::string::npos || colon < arrow)) {
+      refuse_python(colon, "a rule whose body is Python");
+    }
+    if (arrow == std::string::npos) {
+      fail(line.begin, "expected a rule 'predecessor --> successor'");
+    }
+    if (find_in(line, "<<") != std::string::npos ||
+        find_in(line, ">>") != std::string::npos) {
+      fail(line.begin, "new contexts '<<' and '>>' are not supported");
+    }
+    draft_.productions.push_back(ProductionText{Range{line.begin, arrow},
+                                                std::nullopt,
+                                                {Range{arrow + 3, line.end}},
+                                                section_});
+  }
+
+  void read_python(Range line, bool indented) {
+    if (indented) refuse_python(line.begin, "an indented Python block");
+    const std::string_view text = view(line);
+    if (text.starts_with("from math import") || text == "import math") return;
+    if (text.starts_with("context().turtle.") ||
+        text.starts_with("execContext().turtle.")) {
+      turtle_setting(line);
+      return;
+    }
+    if (text.starts_with("extern(") && text.ends_with(")")) {
+      for (const Range& piece :
+           split_top(Range{line.begin + 7, line.end - 1}, ',')) {
+        define(trim(piece));
+      }
+      return;
+    }
+    define(line);
+  }
+
+  // `name = expression`, a constant the rules may read.
+  void define(Range line) {
+    const std::size_t equals = find_equals(line);
+    const Range name =
+        equals == std::string::npos ? line : trim(Range{line.begin, equals});
+    if (equals == std::string::npos || !is_identifier(view(name))) {
+      refuse_python(line.begin, "'" + std::string(view(line)) + "'");
+    }
+    const Range value = trim(Range{equals + 1, line.end});
+    if (!value.empty() &&
+        (text_[value.begin] == '\'' || text_[value.begin] == '"')) {
+      return;  // a string: metadata such as __authors__
+    }
+    draft_.defines.emplace_back(name, trim(Range{equals + 1, line.end}));
+  }
+
+  // context().turtle.setAngleIncrement(90) and its kin.
+  void turtle_setting(Range line) {
+    const std::string_view text = view(line);
+    for (const auto& [method, key] :
+         {std::pair{"setAngleIncrement(", Key::Angle},
+          std::pair{"setDefaultStep(", Key::Step},
+          std::pair{"setWidthIncrement(", Key::WidthIncrement}}) {
+      const std::string prefix =
+          std::string(text.starts_with("exec") ? "execContext().turtle."
+                                               : "context().turtle.") +
+          method;
+      if (text.starts_with(prefix) && text.ends_with(")")) {
+        const Range value{line.begin + prefix.size(), line.end - 1};
+        setting(key, line, trim(value));
+        return;
+      }
+    }
+    refuse_python(line.begin, "this turtle call");
+  }
+
+  const ParseOptions& options_;
+  Draft draft_;
+  Mode mode_ = Mode::Python;
+  Section section_ = Section::Productions;
+  std::vector<std::string> grammar_warnings_;
+};
+
+}  // namespace
+
+Grammar read_lpy(std::shared_ptr<const SourceFile> source,
+                 const ParseOptions& options) {
+  return LpyReader(std::move(source), options).run();
+}
+
+}  // namespace lsys::dialects

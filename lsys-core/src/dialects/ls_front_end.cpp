@@ -1,0 +1,606 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// lsolid's own notation, `.ls`: the notations of ABOP's captions
+// (Prusinkiewicz and Lindenmayer 1990), cpfg (`#define`, `derivation
+// length:`, `-->`), L-Py's declarative part (`Axiom:`, `module`), Houdini
+// (`premise:`) and the source documents of printables/, as
+// docs/language.md describes. This pass sorts lines into settings,
+// productions and the axiom; the grammar builder does the rest.
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <optional>
+#include <string_view>
+#include <utility>
+
+#include "dialects/front_ends.hpp"
+#include "dialects/grammar_builder.hpp"
+#include "lsys/diagnostic.hpp"
+
+namespace lsys::dialects {
+namespace {
+
+struct Spelling {
+  std::string_view text;
+  Key key;
+};
+
+// Every spelling of every setting; longest first so that `width increment`
+// wins over `width`. A space matches any run of blanks.
+constexpr std::array<Spelling, 45> kSpellings = [] {
+  std::array<Spelling, 45> s{{
+      {"axiom", Key::Axiom},
+      {"\u03C9", Key::Axiom},
+      {"premise", Key::Axiom},
+      {"initial value", Key::Axiom},
+      {"n", Key::DerivationLength},
+      {"derivation length", Key::DerivationLength},
+      {"iterations", Key::DerivationLength},
+      {"generations", Key::DerivationLength},
+      {"\u03B4", Key::Angle},
+      {"\u03C3", Key::Angle},
+      {"delta", Key::Angle},
+      {"angle", Key::Angle},
+      {"angle increment", Key::Angle},
+      {"angle factor", Key::AngleFactor},
+      {"step", Key::Step},
+      {"step size", Key::Step},
+      {"branch length", Key::Step},
+      {"branch length (height)", Key::Step},
+      {"width", Key::Width},
+      {"initial width", Key::Width},
+      {"initial line width", Key::Width},
+      {"radius", Key::Radius},
+      {"branch radius", Key::Radius},
+      {"width increment", Key::WidthIncrement},
+      {"line width increment", Key::WidthIncrement},
+      {"width factor", Key::WidthFactor},
+      {"thickness scale", Key::WidthFactor},
+      {"width scale", Key::WidthScale},
+      {"width decrement per generation", Key::WidthPerGeneration},
+      {"radius reduction per generation", Key::RadiusPerGeneration},
+      {"branch radius reduction", Key::RadiusPerGeneration},
+      {"color", Key::Color},
+      {"colour", Key::Color},
+      {"initial color", Key::Color},
+      {"tropism", Key::Tropism},
+      {"tropism direction", Key::Tropism},
+      {"elasticity", Key::Elasticity},
+      {"initial elasticity", Key::Elasticity},
+      {"seed", Key::Seed},
+      {"roll", Key::Roll},
+      {"maximum depth", Key::MaximumDepth},
+      {"ignore", Key::Ignore},
+      {"consider", Key::Consider},
+      {"lsystem", Key::LsystemLabel},
+      {"initial colour", Key::Color},
+  }};
+  for (std::size_t i = 1; i < s.size(); ++i) {
+    for (std::size_t j = i; j > 0 && s[j - 1].text.size() < s[j].text.size();
+         --j) {
+      std::swap(s[j - 1], s[j]);
+    }
+  }
+  return s;
+}();
+
+struct Header {
+  std::string_view text;
+  Section section;
+};
+
+constexpr std::array<Header, 8> kHeaders{{
+    {"production rules", Section::Productions},
+    {"productions", Section::Productions},
+    {"production", Section::Productions},
+    {"homomorphism", Section::Homomorphism},
+    {"interpretation", Section::Homomorphism},
+    {"decomposition", Section::Decomposition},
+    {"aliases", Section::Aliases},
+    {"alias", Section::Aliases},
+}};
+
+// Modules of cpfg (and Houdini's `~`) that lsolid cannot build: refused
+// where they stand rather than split into letters (`@O` is not `@`, `O`).
+const std::vector<RefusedName> kRefused = {
+    {"@O", "a sphere"},
+    {"@o", "a disc"},
+    {"@c", "a disc"},
+    {"@M", "a move to a point"},
+    {"@R", "setting the heading"},
+    {"@L", "a label"},
+    {"~", "a predefined surface in cpfg, a random turn in Houdini"},
+};
+
+// Replaces comments by blanks, keeping line breaks and byte offsets:
+// `/* ... */` anywhere, and from a `#` that stands alone as a word (a
+// blank or the line's start before it, a blank or the line's end after
+// it) to the end of the line (`axiom: F   # three`), as L-Py and shells
+// write them. A `#` that touches a module is cpfg's widen (`F#F`,
+// `#(2)`), and one followed by a letter starts a directive.
+std::string blank_comments(const SourceFile& source) {
+  std::string out = source.text();
+  const auto is_space = [](char c) {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+  };
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    if (out[i] == '#' && (i == 0 || is_space(out[i - 1])) &&
+        (i + 1 == out.size() || is_space(out[i + 1]))) {
+      for (; i < out.size() && out[i] != '\n'; ++i) out[i] = ' ';
+      continue;
+    }
+    if (out[i] != '/' || i + 1 == out.size() || out[i + 1] != '*') continue;
+    const std::size_t close = out.find("*/", i + 2);
+    if (close == std::string::npos)
+      throw error_at(source, i, "unterminated comment '/*'");
+    for (std::size_t j = i; j < close + 2; ++j) {
+      if (out[j] != '\n') out[j] = ' ';
+    }
+    i = close + 1;
+  }
+  return out;
+}
+
+class LsReader : TextScan {
+ public:
+  LsReader(std::shared_ptr<const SourceFile> source,
+           const ParseOptions& options)
+      : TextScan(source, blank_comments(*source)), options_(options) {}
+
+  Grammar run() {
+    sort_lines();
+    draft_.refused = kRefused;
+    return build_grammar(*this, std::move(draft_), options_);
+  }
+
+ private:
+  // Matches a setting spelling at the start of r, followed by `:` or `=`.
+  // Returns the end of the key and the start of the value.
+  struct KeyMatch {
+    Key key;
+    std::string extra;
+    std::size_t key_end;
+    std::size_t value_begin;
+  };
+
+  std::optional<KeyMatch> match_key(Range r) const {
+    const auto separator = [&](std::size_t pos) -> std::optional<std::size_t> {
+      while (pos < r.end && is_blank(text_[pos])) ++pos;
+      if (pos >= r.end) return std::nullopt;
+      if (text_[pos] == ':' && text_.substr(pos, 3) != "::=") return pos + 1;
+      if (text_[pos] == '=' && (pos + 1 >= r.end || text_[pos + 1] != '=')) {
+        return pos + 1;
+      }
+      return std::nullopt;
+    };
+    for (const std::string& extra : options_.extra_settings) {
+      std::string spelling;
+      for (char c : extra) spelling += lower(c);
+      if (const auto end = match_words(r.begin, r.end, spelling)) {
+        if (const auto value = separator(*end)) {
+          return KeyMatch{Key::Extra, extra, *end, *value};
+        }
+      }
+    }
+    for (const Spelling& s : kSpellings) {
+      if (const auto end = match_words(r.begin, r.end, s.text)) {
+        if (const auto value = separator(*end)) {
+          return KeyMatch{s.key, {}, *end, *value};
+        }
+      }
+    }
+    return std::nullopt;
+  }
+
+  // `name:` or `name =` (a setting's start, known or not).
+  bool starts_with_name_and_separator(Range r) const {
+    std::size_t i = r.begin;
+    while (i < r.end && (is_word_char(text_[i]) || text_[i] == ' ')) ++i;
+    if (i == r.begin || i >= r.end) return false;
+    if (std::isdigit(static_cast<unsigned char>(text_[r.begin])) != 0)
+      return false;
+    return (text_[i] == ':' && text_.substr(i, 3) != "::=") ||
+           (text_[i] == '=' && text_.substr(i, 2) != "==");
+  }
+
+  void add_settings(Range line) {
+    // `n=2, δ=90°`: split at commas that are followed by another setting.
+    std::vector<std::size_t> cuts;
+    int depth = 0;
+    for (std::size_t i = line.begin; i < line.end; ++i) {
+      if (text_[i] == '(') ++depth;
+      if (text_[i] == ')') --depth;
+      if (depth == 0 && text_[i] == ',' &&
+          starts_with_name_and_separator(trim(Range{i + 1, line.end}))) {
+        cuts.push_back(i);
+      }
+    }
+    cuts.push_back(line.end);
+    std::size_t start = line.begin;
+    for (std::size_t cut : cuts) {
+      const Range piece = trim(Range{start, cut});
+      const auto match = match_key(piece);
+      if (!match) {
+        std::size_t end = piece.begin;
+        while (end < piece.end &&
+               (is_word_char(text_[end]) || text_[end] == ' '))
+          ++end;
+        fail(piece.begin, "unknown setting '" +
+                              std::string(view(trim(Range{piece.begin, end}))) +
+                              "'");
+      }
+      Range value{match->value_begin, piece.end};
+      // `n=2 // two`: numbers never contain `//`; modules (the axiom, lists)
+      // may, as rolls.
+      if (match->key != Key::Axiom && match->key != Key::Ignore &&
+          match->key != Key::Consider) {
+        const std::size_t comment = find_in(value, "//");
+        if (comment != std::string::npos) value.end = comment;
+      }
+      draft_.settings.push_back(SettingText{match->key, match->extra,
+                                            Range{piece.begin, match->key_end},
+                                            trim(value)});
+      start = cut + 1;
+    }
+  }
+
+  bool add_productions(Range line) {
+    // Several productions may share a line, separated by commas, when each
+    // piece has an arrow (seed 001: `A = f[^Bl]>>[^Bl]>>A, B = f[-Bl]B`).
+    const std::vector<Range> pieces = split_top(line, ',');
+    std::vector<Arrow> arrows;
+    if (pieces.size() > 1) {
+      for (const Range& piece : pieces) {
+        auto arrow = find_arrow(trim(piece), true);
+        if (!arrow) break;
+        arrows.push_back(*arrow);
+      }
+    }
+    if (arrows.size() != pieces.size() || pieces.size() == 1) {
+      arrows.clear();
+      auto arrow = find_arrow(line, true);
+      if (!arrow) return false;
+      arrows.push_back(*arrow);
+    }
+    for (const Arrow& arrow : arrows) {
+      draft_.productions.push_back(
+          ProductionText{arrow.lhs, arrow.probability, {arrow.rhs}, section_});
+    }
+    return true;
+  }
+
+  // True for text that can only be a value: digits, operators, parentheses
+  // and a degree sign (`90`, `0.5*2`, `22.5°`), not modules.
+  bool is_value_text(Range r) const {
+    const std::string_view v = view(trim(r));
+    return !v.empty() && std::all_of(v.begin(), v.end(), [](char c) {
+      return std::isdigit(static_cast<unsigned char>(c)) != 0 ||
+             std::string_view(".-+*/^() eE\xC2\xB0").find(c) !=
+                 std::string_view::npos;
+    }) && std::any_of(v.begin(), v.end(), [](char c) {
+      return std::isdigit(static_cast<unsigned char>(c)) != 0;
+    });
+  }
+
+  // `anlge=90, n=2`: a line of `name = value` pieces where a piece names a
+  // known setting, or gives a number to a multi-letter word, is a settings
+  // line, and its unknown names are errors (not Houdini `=` productions).
+  void reject_misspelt_settings(Range line) const {
+    bool is_settings_line = false;
+    std::vector<Range> unknown;
+    for (const Range& raw : split_top(line, ',')) {
+      const Range piece = trim(raw);
+      if (match_key(piece)) {
+        is_settings_line = true;
+        continue;
+      }
+      const std::size_t equals = find_equals(piece);
+      if (equals == std::string::npos) return;
+      const Range word = trim(Range{piece.begin, equals});
+      const std::string_view name = view(word);
+      if (name.empty() || !std::all_of(name.begin(), name.end(), [](char c) {
+            return is_word_char(c) || c == ' ';
+          })) {
+        return;
+      }
+      if (code_point_length(name) < name.size() &&
+          draft_.declared_modules.count(std::string(name)) == 0 &&
+          is_value_text(Range{equals + 1, piece.end})) {
+        is_settings_line = true;
+      }
+      unknown.push_back(word);
+    }
+    if (is_settings_line && !unknown.empty()) {
+      fail(unknown.front().begin,
+           "unknown setting '" + std::string(view(unknown.front())) + "'");
+    }
+  }
+
+  // True if every name in `r` is a constant (`#define` so far, or
+  // `--define`) and the rest is numbers and arithmetic.
+  bool looks_like_value(Range r) const {
+    if (is_value_text(r)) return true;
+    bool has_name = false;
+    for (std::size_t i = r.begin; i < r.end;) {
+      const char c = text_[i];
+      if (!is_word_char(c) || std::isdigit(static_cast<unsigned char>(c))) {
+        if (!is_blank(c) && !std::isdigit(static_cast<unsigned char>(c)) &&
+            std::string_view(".+-*/^()").find(c) == std::string_view::npos) {
+          return false;
+        }
+        ++i;
+        continue;
+      }
+      std::size_t j = i;
+      while (j < r.end && is_word_char(text_[j])) ++j;
+      const std::string_view word = text_.substr(i, j - i);
+      const bool is_constant =
+          std::any_of(draft_.defines.begin(), draft_.defines.end(),
+                      [&](const auto& d) { return view(d.first) == word; }) ||
+          std::any_of(options_.defines.begin(), options_.defines.end(),
+                      [&](const std::string& d) {
+                        return std::string_view(d).substr(0, d.find('=')) ==
+                               word;
+                      });
+      if (!is_constant) return false;
+      has_name = true;
+      i = j;
+    }
+    return has_name;
+  }
+
+  // Fractint writes productions with `=`: `N=O` rewrites N. A one-letter
+  // setting name (`n`, `N`, `δ`) before `=` and something other than a
+  // value (a number, or arithmetic over numbers and constants) is such a
+  // production; before a value it is a setting, and read_settings refuses
+  // it when the file also uses the letter as a module.
+  bool is_one_letter_production(Range line, const KeyMatch& key) const {
+    if (key.key == Key::Axiom || key.key == Key::Extra) return false;
+    const std::string_view name = view(trim(Range{line.begin, key.key_end}));
+    if (code_point_length(name) != name.size() ||
+        text_[key.value_begin - 1] != '=') {
+      return false;
+    }
+    Range value{key.value_begin, split_top(line, ',').front().end};
+    if (const std::size_t comment = find_in(value, "//");
+        comment != std::string::npos) {
+      value.end = comment;  // `n=2 // two steps`
+    }
+    return !looks_like_value(trim(value));
+  }
+
+  // `axiom X`, `n 5`, Fractint's `Angle 6`: a setting's name and a value
+  // without `:` or `=` would otherwise become modules (`axiomX`).
+  void reject_missing_separator(Range line) const {
+    for (const Spelling& s : kSpellings) {
+      const auto end = match_words(line.begin, line.end, s.text);
+      if (!end || *end >= line.end || !is_blank(text_[*end])) continue;
+      const Range value = trim(Range{*end, line.end});
+      const std::string name(view(Range{line.begin, *end}));
+      // A single letter is a setting only before a number (`n 5`, not the
+      // modules `n F`); a declared name is a module.
+      if ((code_point_length(name) == name.size() && !is_value_text(value)) ||
+          draft_.declared_modules.count(name) != 0) {
+        continue;
+      }
+      const std::string v(view(value));
+      std::string hint = "write '" + name + ": " + v + "'";
+      if (s.key == Key::Angle) {
+        hint += " for " + v + " degrees, or 'angle factor: " + v +
+                "' for Fractint's 360/" + v + " degrees";
+      }
+      fail(*end, "missing ':' after '" + name + "': " + hint);
+    }
+  }
+
+  // A word before `:`, or a multi-letter word before `= number`, reads as a
+  // setting; an ABOP label such as `p1:` does not.
+  void reject_unknown_setting(Range line) const {
+    reject_misspelt_settings(line);
+    std::size_t i = line.begin;
+    while (i < line.end && (is_word_char(text_[i]) || text_[i] == ' ')) ++i;
+    const Range word = trim(Range{line.begin, i});
+    if (word.empty() || i >= line.end) return;
+    const std::string_view name = view(word);
+    if (std::isdigit(static_cast<unsigned char>(name.front())) != 0 ||
+        has_abop_label(line)) {
+      return;
+    }
+    if (find_equals(line) == std::string::npos) {
+      if (text_[i] == ':' && text_.substr(i, 3) != "::=") {
+        fail(word.begin, "unknown setting '" + std::string(name) + "'");
+      }
+      return;
+    }
+    if (text_[i] != '=' || code_point_length(name) == name.size() ||
+        draft_.declared_modules.count(std::string(name)) != 0) {
+      return;
+    }
+    const std::string_view value = view(trim(Range{i + 1, line.end}));
+    const bool numeric =
+        !value.empty() && std::all_of(value.begin(), value.end(), [](char c) {
+          return std::isdigit(static_cast<unsigned char>(c)) != 0 ||
+                 std::string_view(".-+eE \xC2\xB0").find(c) !=
+                     std::string_view::npos;
+        });
+    if (numeric)
+      fail(word.begin, "unknown setting '" + std::string(name) + "'");
+  }
+
+  std::optional<std::pair<Section, Range>> match_header(Range line) const {
+    for (const Header& h : kHeaders) {
+      const auto end = match_words(line.begin, line.end, h.text);
+      if (!end) continue;
+      std::size_t pos = *end;
+      while (pos < line.end && is_blank(text_[pos])) ++pos;
+      if (pos == line.end) return std::pair{h.section, Range{pos, pos}};
+      if (text_[pos] == ':' && text_.substr(pos, 3) != "::=") {
+        return std::pair{h.section, trim(Range{pos + 1, line.end})};
+      }
+    }
+    return std::nullopt;
+  }
+
+  void sort_lines() {
+    bool after_production = false;
+    std::size_t start = 0;
+    while (start < text_.size()) {
+      std::size_t end = text_.find('\n', start);
+      if (end == std::string::npos) end = text_.size();
+      const Range raw{start, end};
+      start = end + 1;
+      const Range line = trim(raw);
+      if (line.empty()) continue;
+      const bool indented = line.begin > raw.begin;
+      const std::string_view t = view(line);
+      if (t.starts_with("//")) continue;
+      if (t.starts_with("#")) {
+        if (t.size() > 1 &&
+            std::isalpha(static_cast<unsigned char>(t[1])) != 0) {
+          directive(line);
+          after_production = false;
+        }
+        continue;
+      }
+      after_production = sort_line(line, indented, after_production);
+    }
+  }
+
+  // Returns true if the line was (part of) a production.
+  bool sort_line(Range line, bool indented, bool after_production) {
+    if (match_words(line.begin, line.end, "endlsystem") == line.end ||
+        match_words(line.begin, line.end, "warnings") == line.end ||
+        match_words(line.begin, line.end, "no warnings") == line.end) {
+      return false;
+    }
+    // A header alone starts a section; with content after its colon it
+    // applies to that line only (`aliases: f=F`, `Production rules : A=fA`).
+    Section section = section_;
+    if (const auto header = match_header(line)) {
+      if (header->second.empty()) {
+        section_ = header->first;
+        return false;
+      }
+      section = header->first;
+      line = header->second;
+    }
+    const Section previous = std::exchange(section_, section);
+    const bool result = sort_content(line, indented, after_production);
+    section_ = previous;
+    return result;
+  }
+
+  bool sort_content(Range line, bool indented, bool after_production) {
+    if (section_ == Section::Aliases) {
+      if (const auto key = match_key(line);
+          key && !is_one_letter_production(line, *key)) {
+        add_settings(line);
+      } else {
+        draft_.alias_lines.push_back(line);
+      }
+      return false;
+    }
+    if (find_arrow(line, false)) return add_productions(line);
+    for (std::string_view keyword : {"modules", "module"}) {
+      if (const auto end = match_words(line.begin, line.end, keyword);
+          end && *end < line.end &&
+          (is_blank(text_[*end]) || text_[*end] == ':')) {
+        std::size_t pos = *end;
+        if (text_[pos] == ':') ++pos;
+        const Range names = trim(Range{pos, line.end});
+        draft_.module_lines.push_back(names);
+        for (const DeclaredName& declared : module_names(*this, names)) {
+          draft_.declared_modules.insert(std::string(view(declared.name)));
+        }
+        return false;
+      }
+    }
+    if (const auto key = match_key(line);
+        key && !is_one_letter_production(line, *key)) {
+      has_axiom_setting_ = has_axiom_setting_ || key->key == Key::Axiom;
+      add_settings(line);
+      return false;
+    }
+    reject_unknown_setting(line);
+    if (find_equals(line) != std::string::npos) return add_productions(line);
+    if (indented && after_production) {
+      draft_.productions.back().rhs.push_back(line);
+      return true;
+    }
+    reject_missing_separator(line);
+    if (!draft_.axiom && !has_axiom_setting_ && draft_.productions.empty()) {
+      draft_.axiom = line;
+      return false;
+    }
+    fail(line.begin,
+         "missing arrow: a production needs '\u2192' or '->' between "
+         "predecessor and successor");
+  }
+
+  void directive(Range line) {
+    std::size_t i = line.begin + 1;
+    while (i < line.end && std::isalpha(static_cast<unsigned char>(text_[i]))) {
+      ++i;
+    }
+    const std::string_view word =
+        text_.substr(line.begin + 1, i - line.begin - 1);
+    const Range rest = trim(Range{i, line.end});
+    if (word == "define") {
+      std::size_t j = rest.begin;
+      while (j < rest.end && is_word_char(text_[j])) ++j;
+      const Range name{rest.begin, j};
+      if (name.empty() || !is_identifier(view(name))) {
+        fail(rest.begin, "expected a name after #define");
+      }
+      const Range value = trim(Range{j, rest.end});
+      if (value.empty()) fail(j, "expected a value after the name");
+      draft_.defines.emplace_back(name, value);
+      return;
+    }
+    if (word == "ignore" || word == "consider") {
+      Range value = rest;
+      if (!value.empty() && text_[value.begin] == ':') {
+        value = trim(Range{value.begin + 1, value.end});
+      }
+      draft_.settings.push_back(
+          SettingText{word == "ignore" ? Key::Ignore : Key::Consider,
+                      {},
+                      Range{line.begin, i},
+                      value});
+      return;
+    }
+    if (word == "include") fail(line.begin, "#include is not supported");
+    fail(line.begin, "unknown directive '#" + std::string(word) + "'");
+  }
+
+  // True when a line starts with an ABOP label such as `p1:` or `p_2 :`
+  // (while sorting lines, before names and constants are known).
+  bool has_abop_label(Range line) const {
+    std::size_t i = line.begin;
+    if (i >= line.end || lower(text_[i]) != 'p') return false;
+    ++i;
+    if (i < line.end && text_[i] == '_') ++i;
+    const std::size_t digits = i;
+    while (i < line.end && std::isdigit(static_cast<unsigned char>(text_[i]))) {
+      ++i;
+    }
+    if (i == digits) return false;
+    while (i < line.end && is_blank(text_[i])) ++i;
+    return i < line.end && text_[i] == ':';
+  }
+
+  const ParseOptions& options_;
+  Draft draft_;
+  Section section_ = Section::Productions;
+  bool has_axiom_setting_ = false;
+};
+
+}  // namespace
+
+Grammar read_ls(std::shared_ptr<const SourceFile> source,
+                const ParseOptions& options) {
+  return LsReader(std::move(source), options).run();
+}
+
+}  // namespace lsys::dialects

@@ -1,0 +1,69 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#include "lsys/dialect.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "support/core_helpers.hpp"
+
+namespace lsys {
+namespace {
+
+TEST(Dialect, TellsEachNotationFromItsFirstLines) {
+  EXPECT_EQ(detect_dialect("# Lparser\n12   # recursion\n20\n30\nF\n@\n"),
+            Dialect::Lparser);
+  EXPECT_EQ(detect_dialect("; comment\nKoch1 { ; A. Mariano\n angle 6\n}\n"),
+            Dialect::Fractint);
+  EXPECT_EQ(detect_dialect("{ a nameless block is a comment\n}\nKoch {\n}\n"),
+            Dialect::Fractint);
+  EXPECT_EQ(detect_dialect("a = 1\nAxiom: F\nproduction:\nF --> FF\n"),
+            Dialect::Lpy);
+  EXPECT_EQ(detect_dialect("n=2\n\u03B4=90\nF\nF \u2192 F+F\n"), Dialect::Ls);
+  // A `.ls` polygon axiom is not a Fractint system, nor a lone number an
+  // Lparser header.
+  EXPECT_EQ(detect_dialect("{.-f+f.}\nn=1\n"), Dialect::Ls);
+  EXPECT_EQ(detect_dialect("2\nF\nF -> FF\n"), Dialect::Ls);
+  EXPECT_EQ(detect_dialect("A \u2192 {F}\nA\n"), Dialect::Ls);
+}
+
+TEST(Dialect, TakesEveryPrintableForLsolidsOwnNotation) {
+  const auto dir = testing::source_dir() / "printables";
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().extension() != ".ls") continue;
+    ++files;
+    std::ifstream in(entry.path(), std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    EXPECT_EQ(detect_dialect(text.str()), Dialect::Ls) << entry.path();
+  }
+  EXPECT_GT(files, 30);
+}
+
+TEST(Dialect, NamesEachNotationAsDashDashDialectTakesIt) {
+  for (Dialect d :
+       {Dialect::Ls, Dialect::Lparser, Dialect::Fractint, Dialect::Lpy}) {
+    EXPECT_EQ(dialect_named(dialect_name(d)), d);
+  }
+  EXPECT_EQ(dialect_name(Dialect::Lparser), "lparser");
+  EXPECT_FALSE(dialect_named("cpfg"));
+}
+
+TEST(Dialect, IsForcedByTheParseOptions) {
+  // Two numbers and a rule: Lparser by default; as `.ls`, an axiom line
+  // `2` and a setting would be refused, so force a reading that works.
+  const char* text = "1\n90\n10\nF\nF=F+F\n@\n";
+  EXPECT_EQ(testing::located_error_of([&] {
+              (void)parse_grammar_text(text, {.dialect = Dialect::Ls});
+            }).substr(0, 4),
+            "2:1:");
+  const Grammar g = parse_grammar_text(text);
+  EXPECT_EQ(g.settings.angle_deg, 90.0);
+}
+
+}  // namespace
+}  // namespace lsys

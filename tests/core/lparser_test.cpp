@@ -1,0 +1,118 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// The Lparser front end (docs/dialects/lparser.md).
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include "support/core_helpers.hpp"
+
+namespace lsys {
+namespace {
+
+using testing::located_error_of;
+
+Grammar lparser(std::string_view text) {
+  return parse_grammar_text(text, {.dialect = Dialect::Lparser}, "tree.ls");
+}
+
+std::string derived_lparser(std::string_view text) {
+  const Grammar g = lparser(text);
+  return to_string(derive(g), g.alphabet);
+}
+
+void expect_near(const glm::dvec3& actual, const glm::dvec3& expected) {
+  EXPECT_LT(glm::length(actual - expected), 1e-9)
+      << actual.x << ", " << actual.y << ", " << actual.z;
+}
+
+TEST(Lparser, ReadsTheThreeNumbersTheAxiomAndTheRulesUpToTheAt) {
+  const Grammar g = lparser(
+      "# --- L-System Parser/Mutator --- Lj Lapre ---\n"
+      "2          # recursion\n"
+      "90         # angle\n"
+      "10         # thickness\n"
+      "#\n"
+      "F          # axiom\n"
+      "F=F+F      # a rule, and a comment\n"
+      "F=FF\n"
+      "@\n"
+      "this is not read\n");
+  EXPECT_EQ(g.settings.derivation_length, 2);
+  EXPECT_EQ(g.settings.angle_deg, 90.0);
+  EXPECT_EQ(to_string(derive(g), g.alphabet), "F+F+F+F");  // first rule wins
+  const Skeleton s = interpret(g);
+  ASSERT_EQ(s.segments.size(), 4U);
+  // F is 100 units, up (+Z); + turns toward the turtle's left.
+  expect_near(s.segments[0].p1, {0, 0, 100});
+  expect_near(s.segments[1].p1, {-100, 0, 100});
+  EXPECT_DOUBLE_EQ(s.segments[0].start_diameter, 10.0);
+  EXPECT_EQ(s.segments[0].color, 2);
+}
+
+TEST(Lparser, MakesEachSegmentAsThickAsAShareOfItsOwnLength) {
+  const Skeleton s = interpret(lparser("0\n90\n10\nF'FZF(50)!F?F\n@\n"));
+  ASSERT_EQ(s.segments.size(), 6U);
+  EXPECT_DOUBLE_EQ(s.segments[0].start_diameter, 10.0);   // 10% of 100
+  EXPECT_DOUBLE_EQ(s.segments[1].start_diameter, 9.0);    // ' : 90 long
+  EXPECT_DOUBLE_EQ(s.segments[2].start_diameter, 4.5);    // Z: half a step
+  EXPECT_DOUBLE_EQ(s.segments[3].start_diameter, 5.0);    // F(50)
+  EXPECT_NEAR(s.segments[4].start_diameter, 6.3, 1e-12);  // ! : 7% of 90
+  EXPECT_NEAR(s.segments[5].start_diameter, 9.0, 1e-12);  // ? undoes it
+  expect_near(s.segments[2].p1, {0, 0, 100 + 90 + 45});
+}
+
+TEST(Lparser, LeavesAParameterBehindTheSuccessorOfItsModule) {
+  // f(200) with f=z is z(200); F(30) with F='(1.25)F'(.8) drops the 30, as
+  // the successor's last module has a parameter of its own.
+  const char* text = "1\n90\n10\nf(200)F(30)F\nf=z\nF='(1.25)F'(.8)\n@\n";
+  EXPECT_EQ(derived_lparser(text), "z(200)'(1.25)F'(0.8)'(1.25)F'(0.8)");
+  const Skeleton s = interpret(lparser(text));
+  ASSERT_EQ(s.segments.size(), 2U);
+  expect_near(s.segments[0].p0, {0, 0, 200});
+  expect_near(s.segments[0].p1, {0, 0, 325});
+  expect_near(s.segments[1].p1, {0, 0, 450});  // 125 × 0.8 × 1.25 again
+}
+
+TEST(Lparser, SwapsTurnsAfterADollarAsItsFrameTurnsRightHanded) {
+  // After +(90) the heading is horizontal; `$` rolls up to the sky. In
+  // Lparser's frame `+` then turns the way lsolid's `-` does.
+  const Skeleton swapped = interpret(lparser("0\n90\n10\n+(90)$+(90)F\n@\n"));
+  ASSERT_EQ(swapped.segments.size(), 1U);
+  expect_near(swapped.segments[0].p1, {0, 100, 0});
+  const Skeleton plain = interpret(lparser("0\n90\n10\n+(90)+(90)F\n@\n"));
+  expect_near(plain.segments[0].p1, {0, 0, -100});
+  // Straight up, `$` does nothing, and turns are not swapped.
+  const Skeleton up = interpret(lparser("0\n90\n10\n$+(90)F\n@\n"));
+  expect_near(up.segments[0].p1, {-100, 0, 0});
+}
+
+TEST(Lparser, PitchesTowardTheGroundWithTAfterADollar) {
+  // Heading horizontal, upright: t(0.5) pitches down by 0.5 rad.
+  const Skeleton s = interpret(lparser("0\n90\n10\n+(90)$t(.5)F\n@\n"));
+  ASSERT_EQ(s.segments.size(), 1U);
+  expect_near(s.segments[0].p1,
+              {-100 * std::cos(0.5), 0, -100 * std::sin(0.5)});
+}
+
+TEST(Lparser, RollsAHalfTurnWithPercentAndNeverCutsWithIt) {
+  const Grammar g = lparser("1\n90\n10\nA\nA=F%[+F]F\n@\n");
+  const Skeleton s = interpret(g);
+  ASSERT_EQ(s.segments.size(), 3U);
+  expect_near(s.segments[1].p1, {100, 0, 100});  // left is now +X
+}
+
+TEST(Lparser, RefusesWhatItCannotReadAtItsPlace) {
+  EXPECT_EQ(located_error_of([] { (void)lparser("2.5\n90\n10\nF\n@\n"); }),
+            "1:1: a fractional recursion depth (Lparser's growing mode) is "
+            "not supported: give a whole number");
+  EXPECT_EQ(located_error_of([] { (void)lparser("2\n90\n10\nF\nF+F\n@\n"); }),
+            "5:1: expected a rule such as 'F=FF' (one character, '=', the "
+            "successor, no blanks) or '@' to end the file");
+  EXPECT_EQ(located_error_of([] { (void)lparser("2\nninety\n10\nF\n@\n"); }),
+            "2:1: expected the angle, a number on a line of its own");
+}
+
+}  // namespace
+}  // namespace lsys

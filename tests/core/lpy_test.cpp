@@ -1,0 +1,141 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// The L-Py front end (docs/dialects/lpy.md).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "support/core_helpers.hpp"
+
+namespace lsys {
+namespace {
+
+using testing::located_error_of;
+
+Grammar lpy(std::string_view text, ParseOptions options = {}) {
+  options.dialect = Dialect::Lpy;
+  return parse_grammar_text(text, options, "plant.lpy");
+}
+
+Skeleton drawn(std::string_view axiom) {
+  return interpret(lpy("Axiom: " + std::string(axiom) +
+                       "\nderivation length: 0\nproduction:\nendlsystem\n"));
+}
+
+void expect_near(const glm::dvec3& actual, const glm::dvec3& expected) {
+  EXPECT_LT(glm::length(actual - expected), 1e-9)
+      << actual.x << ", " << actual.y << ", " << actual.z;
+}
+
+constexpr const char* kApex =
+    "from math import *\n"
+    "dl = 0.5  # shrink\n"
+    "h = (dl*8) ** 0.5\n"
+    "module Apex(x)\n"
+    "\n"
+    "Axiom: F(h)Apex(1)\n"
+    "derivation length: 2\n"
+    "production:\n"
+    "Apex(x) --> F(x*dl)Apex(x*dl)\n"
+    "interpretation:\n"
+    "Apex(x) --> G\n"
+    "endlsystem\n"
+    "###### INITIALISATION ######\n"
+    "__authors__ = 'someone'\n"
+    "def __initialiseContext__(context):\n"
+    "\tpass\n";
+
+TEST(Lpy, ReadsConstantsModulesAndRuleSections) {
+  const Grammar g = lpy(kApex);
+  EXPECT_EQ(g.settings.derivation_length, 2);
+  EXPECT_EQ(to_string(derive(g), g.alphabet), "F(2)F(0.5)F(0.25) Apex(0.25)");
+  // G is not a turtle module in L-Py: the homomorphism's G draws nothing.
+  const Skeleton s = interpret(g);
+  ASSERT_EQ(s.segments.size(), 3U);
+  expect_near(s.segments[2].p1, {0, 0, 2.75});
+  // --define replaces a constant, as extern() parameters are replaced.
+  const Grammar defined = lpy(kApex, {.defines = {"dl=0.25"}});
+  EXPECT_EQ(to_string(derive(defined), defined.alphabet),
+            "F(1.4142135623730951)F(0.25)F(0.0625) Apex(0.0625)");
+}
+
+TEST(Lpy, IsDetectedByItsAxiomAndProductionLines) {
+  EXPECT_EQ(detect_dialect(kApex), Dialect::Lpy);
+}
+
+TEST(Lpy, TakesWidthsAsRadiiAndWidensWithUnderscore) {
+  // L-Py's width is 0.1 (a radius); _(2) and !(3) set it, _ and ! add and
+  // subtract the increment of 1.
+  const Skeleton s = drawn("F_(2)F!(3)F_F!F");
+  ASSERT_EQ(s.segments.size(), 5U);
+  EXPECT_DOUBLE_EQ(s.segments[0].start_diameter, 0.2);
+  EXPECT_DOUBLE_EQ(s.segments[1].start_diameter, 4.0);
+  EXPECT_DOUBLE_EQ(s.segments[2].start_diameter, 6.0);
+  EXPECT_DOUBLE_EQ(s.segments[3].start_diameter, 8.0);
+  EXPECT_DOUBLE_EQ(s.segments[4].start_diameter, 6.0);
+}
+
+TEST(Lpy, TurnsBySixtyDegreesUnlessPythonSetsTheAngle) {
+  const Skeleton sixty = drawn("F+F");
+  const double r = std::acos(-1.0) / 3.0;
+  expect_near(sixty.segments[1].p1, {-std::sin(r), 0, 1 + std::cos(r)});
+  const Skeleton ninety =
+      interpret(lpy("execContext().turtle.setAngleIncrement(90)\nAxiom: F+F\n"
+                    "derivation length: 0\nproduction:\nendlsystem\n"));
+  expect_near(ninety.segments[1].p1, {-1, 0, 1});
+}
+
+TEST(Lpy, DrawsAModuleAliasAsItsTarget) {
+  const Grammar g =
+      lpy("module A = F\nAxiom: A(1)\nderivation length: 5\nproduction:\n"
+          "A(x) --> A(x+1)\nendlsystem\n");
+  const Skeleton s = interpret(g);
+  ASSERT_EQ(s.segments.size(), 1U);
+  expect_near(s.segments[0].p1, {0, 0, 6});
+}
+
+TEST(Lpy, LeavesOutRulesOfGroupsOnlyPythonCanSelect) {
+  const Grammar g =
+      lpy("Axiom: A\nderivation length: 1\nproduction:\nA --> F\ngroup 1:\n"
+          "A --> FF\nendgroup\nendlsystem\n");
+  EXPECT_EQ(to_string(derive(g), g.alphabet), "F");
+  ASSERT_EQ(g.warnings.size(), 1U);
+  EXPECT_EQ(g.warnings[0],
+            "rules of 'group 1:' are left out: they apply only when Python "
+            "code selects their group");
+}
+
+TEST(Lpy, RefusesPythonItWouldHaveToRunAtItsLine) {
+  const std::string tail =
+      ": this is Python code, and lsolid does not run Python; it reads the "
+      "declarative part of L-Py (docs/dialects/lpy.md)";
+  EXPECT_EQ(located_error_of([] {
+              (void)lpy(
+                  "Axiom: A(1)\nproduction:\nA(x) :\n"
+                  "    if x < 2: produce F\nendlsystem\n");
+            }),
+            "3:6: a rule whose body is Python" + tail);
+  EXPECT_EQ(located_error_of([] {
+              (void)lpy("import random\nAxiom: F\nproduction:\nendlsystem\n");
+            }),
+            "1:1: 'import random'" + tail);
+  EXPECT_EQ(located_error_of([] {
+              (void)lpy("def Start():\n  pass\nAxiom: F\nproduction:\n");
+            }),
+            "1:1: 'def Start():'" + tail);
+}
+
+TEST(Lpy, RefusesModulesItCannotBuildByTheirWholeName) {
+  EXPECT_EQ(located_error_of([] { (void)drawn("F@O(0.5)"); }),
+            "1:9: '@O' (a sphere) is not supported by lsolid");
+  EXPECT_EQ(located_error_of([] { (void)drawn("F~l(2)"); }),
+            "1:9: '~' (a predefined surface) is not supported by lsolid");
+  // @Gc and @Ge are whole modules, never @, G and c.
+  const Skeleton s = drawn("@GcF(2)+(30)F@Ge");
+  EXPECT_EQ(s.segments.size(), 2U);
+}
+
+}  // namespace
+}  // namespace lsys

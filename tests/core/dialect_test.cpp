@@ -30,18 +30,24 @@ TEST(Dialect, TellsEachNotationFromItsFirstLines) {
   EXPECT_EQ(detect_dialect("A \u2192 {F}\nA\n"), Dialect::Ls);
 }
 
-TEST(Dialect, TakesEveryPrintableForLsolidsOwnNotation) {
+TEST(Dialect, TellsTheNotationOfEveryPrintable) {
+  // printables/ names files of other notations by their notation.
   const auto dir = testing::source_dir() / "printables";
-  int files = 0;
+  int own = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    if (entry.path().extension() != ".ls") continue;
-    ++files;
+    const std::string name = entry.path().filename().string();
+    Dialect expected = Dialect::Ls;
+    if (name.starts_with("lparser-")) expected = Dialect::Lparser;
+    if (name.starts_with("fractint-")) expected = Dialect::Fractint;
+    if (name.starts_with("lpy-")) expected = Dialect::Lpy;
+    if (expected == Dialect::Ls && entry.path().extension() != ".ls") continue;
+    own += expected == Dialect::Ls ? 1 : 0;
     std::ifstream in(entry.path(), std::ios::binary);
     std::ostringstream text;
     text << in.rdbuf();
-    EXPECT_EQ(detect_dialect(text.str()), Dialect::Ls) << entry.path();
+    EXPECT_EQ(detect_dialect(text.str()), expected) << name;
   }
-  EXPECT_GT(files, 30);
+  EXPECT_GT(own, 30);
 }
 
 TEST(Dialect, NamesEachNotationAsDashDashDialectTakesIt) {

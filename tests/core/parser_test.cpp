@@ -449,5 +449,14 @@ TEST(Parser, KeepsCpfgsAtModulesWholeAndRefusesThoseItCannotBuild) {
             "Houdini) is not supported by lsolid");
 }
 
+TEST(Parser, ContinuesALongAxiomOnIndentedLines) {
+  EXPECT_EQ(derived("axiom: F[+F]\n    F[-F]\nF -> FF\nn=1"), "FF[+FF]FF[-FF]");
+  EXPECT_EQ(derived("F[+F]\n  F[-F]\n  F\nn=0"), "F[+F]F[-F]F");
+}
+
+TEST(Parser, EndsADefineAtACommentAsTheCPreprocessorDoes) {
+  EXPECT_EQ(derived("#define R 0.5 // ratio\nn=1\nF\nF -> F(R)"), "F(0.5)");
+}
+
 }  // namespace
 }  // namespace lsys

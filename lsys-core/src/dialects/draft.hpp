@@ -112,6 +112,7 @@ struct Syntax {
 /// itself decides (its symbols and defaults).
 struct Draft {
   std::optional<Range> axiom;
+  std::vector<Range> axiom_more;  ///< indented lines that continue it
   std::vector<ProductionText> productions;
   std::vector<SettingText> settings;
   std::vector<std::pair<Range, Range>> defines;  ///< name, value

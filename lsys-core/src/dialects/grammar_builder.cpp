@@ -82,7 +82,7 @@ class GrammarBuilder : TextScan {
       grammar_.alphabet.intern(symbol.name);
     }
     for (const RefusedName& refused : draft_.refused) {
-      grammar_.alphabet.intern(refused.name);
+      refused_.emplace_back(grammar_.alphabet.intern(refused.name), &refused);
     }
     grammar_.warnings = draft_.warnings;
     grammar_.constants = draft_.constants;
@@ -92,6 +92,7 @@ class GrammarBuilder : TextScan {
     read_module_declarations();
     read_settings();
     read_axiom();
+    grammar_.productions.reserve(draft_.productions.size());
     for (const ProductionText& p : draft_.productions) read_production(p);
     reject_letter_settings_of_modules();
     build_commands();
@@ -432,12 +433,14 @@ class GrammarBuilder : TextScan {
   }
 
   void reject_refused(SymbolId symbol, std::size_t offset) const {
-    const std::string& name = grammar_.alphabet.name(symbol);
-    for (const RefusedName& refused : draft_.refused) {
-      if (refused.name == name) {
-        fail(offset, "'" + name + "' (" + std::string(refused.what) +
-                         ") is not supported by lsolid");
-      }
+    for (const auto& [id, refused] : refused_) {
+      if (id != symbol) continue;
+      std::string message = "'";
+      message += refused->name;
+      message += "' (";
+      message += refused->what;
+      message += ") is not supported by lsolid";
+      fail(offset, std::move(message));
     }
   }
 
@@ -626,7 +629,10 @@ class GrammarBuilder : TextScan {
     }
     const ExpressionScope scope{.constants = &grammar_.constants,
                                 .used_constants = &used_constants_};
-    grammar_.axiom = modules({*draft_.axiom}, scope);
+    std::vector<Range> ranges{*draft_.axiom};
+    ranges.insert(ranges.end(), draft_.axiom_more.begin(),
+                  draft_.axiom_more.end());
+    grammar_.axiom = modules(ranges, scope);
     grammar_.axiom_offset = draft_.axiom->begin;
   }
 
@@ -857,6 +863,8 @@ class GrammarBuilder : TextScan {
   Grammar grammar_;
   std::vector<SettingText> letter_settings_;  // `n=2`: one letter and `=`
   std::unordered_map<SymbolId, TurtleCommand> aliases_;
+  // The ids of the names the notation refuses, and why.
+  std::vector<std::pair<SymbolId, const RefusedName*>> refused_;
   std::unordered_map<SymbolId, std::pair<int, std::size_t>> arity_;
   mutable std::set<std::string> used_constants_;  // filled while compiling
   std::vector<std::string> given_defines_;

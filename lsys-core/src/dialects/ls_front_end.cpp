@@ -460,9 +460,12 @@ class LsReader : TextScan {
             std::isalpha(static_cast<unsigned char>(t[1])) != 0) {
           directive(line);
           after_production = false;
+          after_axiom_ = false;
         }
         continue;
       }
+      continues_axiom_ = indented && after_axiom_;
+      after_axiom_ = false;
       after_production = sort_line(line, indented, after_production);
     }
   }
@@ -519,6 +522,7 @@ class LsReader : TextScan {
     if (const auto key = match_key(line);
         key && !is_one_letter_production(line, *key)) {
       has_axiom_setting_ = has_axiom_setting_ || key->key == Key::Axiom;
+      after_axiom_ = key->key == Key::Axiom;
       add_settings(line);
       return false;
     }
@@ -528,9 +532,16 @@ class LsReader : TextScan {
       draft_.productions.back().rhs.push_back(line);
       return true;
     }
+    // A long axiom may go on over indented lines, as a successor does.
+    if (continues_axiom_) {
+      draft_.axiom_more.push_back(line);
+      after_axiom_ = true;
+      return false;
+    }
     reject_missing_separator(line);
     if (!draft_.axiom && !has_axiom_setting_ && draft_.productions.empty()) {
       draft_.axiom = line;
+      after_axiom_ = true;
       return false;
     }
     fail(line.begin,
@@ -553,7 +564,12 @@ class LsReader : TextScan {
       if (name.empty() || !is_identifier(view(name))) {
         fail(rest.begin, "expected a name after #define");
       }
-      const Range value = trim(Range{j, rest.end});
+      // cpfg runs the C preprocessor, which takes `//` for a comment.
+      Range value = trim(Range{j, rest.end});
+      if (const std::size_t comment = find_in(value, "//");
+          comment != std::string::npos) {
+        value = trim(Range{value.begin, comment});
+      }
       if (value.empty()) fail(j, "expected a value after the name");
       draft_.defines.emplace_back(name, value);
       return;
@@ -594,6 +610,8 @@ class LsReader : TextScan {
   Draft draft_;
   Section section_ = Section::Productions;
   bool has_axiom_setting_ = false;
+  bool after_axiom_ = false;      // the last line set or continued the axiom
+  bool continues_axiom_ = false;  // this line is indented after it
 };
 
 }  // namespace

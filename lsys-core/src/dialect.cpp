@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #include "lsys/dialect.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <utility>
@@ -37,39 +38,53 @@ void for_each_line(std::string_view text, const Each& each) {
   }
 }
 
-// `12`, `22.5`, `-1`, with a comment or nothing after it.
+// `12`, `22.5`, `1e1`, alone or before a blank: Lparser reads the number
+// with sscanf and ignores the rest of the line.
 bool is_number_line(std::string_view line) {
+  const auto digit = [](char c) {
+    return std::isdigit(static_cast<unsigned char>(c)) != 0;
+  };
   std::size_t i = 0;
   if (i < line.size() && (line[i] == '-' || line[i] == '+')) ++i;
-  const std::size_t digits = i;
-  while (i < line.size() &&
-         (std::isdigit(static_cast<unsigned char>(line[i])) != 0 ||
-          line[i] == '.')) {
+  if (i == line.size() || !(digit(line[i]) || line[i] == '.')) return false;
+  while (i < line.size() && (digit(line[i]) || line[i] == '.' ||
+                             line[i] == 'e' || line[i] == 'E')) {
     ++i;
   }
-  if (i == digits) return false;
-  const std::string_view rest = trimmed(line.substr(i));
-  return rest.empty() || rest.front() == '#';
+  return i == line.size() || line[i] == ' ' || line[i] == '\t' ||
+         line[i] == '#';
 }
 
-// `Koch1 {`, `Dragon{`: one word, then a brace.
+// `Koch1 {`, `Dragon{`, `My Plant {`: a name, then a brace, and nothing
+// that a production or setting would hold before it. A block that closes
+// on its own line is a comment to Fractint, not a system.
 bool is_system_start(std::string_view line) {
   const std::size_t brace = line.find('{');
   if (brace == std::string_view::npos || brace == 0) return false;
+  if (line.find('}', brace) != std::string_view::npos) return false;
   const std::string_view name = trimmed(line.substr(0, brace));
   if (name.empty()) return false;
-  for (char c : name) {
-    if (c == ' ' || c == '\t' || c == '=' || c == '>' || c == ':' || c == '[' ||
-        c == '(' || static_cast<unsigned char>(c) >= 0x80U) {
-      return false;
-    }
-  }
-  return true;
+  return std::none_of(name.begin(), name.end(), [](char c) {
+    return c == '=' || c == '>' || c == '<' || c == ':' || c == '[' ||
+           c == '(' || static_cast<unsigned char>(c) >= 0x80U;
+  });
+}
+
+bool ends_with(std::string_view name, std::string_view extension) {
+  if (name.size() < extension.size()) return false;
+  return std::equal(extension.begin(), extension.end(),
+                    name.end() - static_cast<std::ptrdiff_t>(extension.size()),
+                    [](char a, char b) {
+                      return std::tolower(static_cast<unsigned char>(a)) == b;
+                    });
 }
 
 }  // namespace
 
-Dialect detect_dialect(std::string_view text) {
+Dialect detect_dialect(std::string_view text, std::string_view file_name) {
+  if (ends_with(file_name, ".lpy")) return Dialect::Lpy;
+  const bool named_ls = ends_with(file_name, ".ls");
+  const bool named_l = ends_with(file_name, ".l");
   int numbers = 0;
   bool first = true;
   bool fractint = false;
@@ -79,18 +94,23 @@ Dialect detect_dialect(std::string_view text) {
   for_each_line(text, [&](std::string_view line) {
     if (line.empty()) return true;
     if (first && line.front() == ';') return true;
-    // A nameless `{ … }` block is a comment to Fractint (penrose.l opens
-    // with one); the system after it decides.
+    // A `{ … }` block without a name is a comment to Fractint (penrose.l
+    // opens with one), and so is one that closes on its line; the system
+    // after it decides.
     if (in_comment_block) {
       in_comment_block = line.front() != '}';
       return true;
     }
-    if (first && line.front() == '{' &&
-        line.find('}') == std::string_view::npos) {
+    if (first && line.find('{') != std::string_view::npos &&
+        line.find('}', line.find('{')) != std::string_view::npos &&
+        line.find_first_of("=>:") == std::string_view::npos) {
+      return true;
+    }
+    if (first && line.front() == '{') {
       in_comment_block = true;
       return true;
     }
-    if (first && is_system_start(line)) {
+    if (first && !named_ls && is_system_start(line)) {
       fractint = true;
       return false;
     }
@@ -105,7 +125,7 @@ Dialect detect_dialect(std::string_view text) {
   });
   if (fractint) return Dialect::Fractint;
   if (numbers >= 2) return Dialect::Lparser;
-  if (axiom && production) return Dialect::Lpy;
+  if (axiom && production && !named_ls && !named_l) return Dialect::Lpy;
   return Dialect::Ls;
 }
 

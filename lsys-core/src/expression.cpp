@@ -471,7 +471,30 @@ class Compiler {
                    (function->arity == 1 ? " argument, " : " arguments, ") +
                    std::to_string(args.size()) + " given");
     }
+    if (scope_.radians) return call_in_radians(function->op, at, args);
     return fold(add(function->op, at, args[0], args.size() > 1 ? args[1] : -1));
+  }
+
+  // The code runs in degrees; radians are converted on the way in (sin,
+  // cos, tan) or out (the inverses).
+  int call_in_radians(Op op, std::size_t at, std::vector<int>& args) {
+    const auto constant = [&](double value) {
+      const int node = add(Op::Constant, at);
+      nodes_.back().instruction.value = value;
+      return node;
+    };
+    const double degrees_per_radian = 180.0 / 3.14159265358979323846;
+    if (op == Op::Sin || op == Op::Cos || op == Op::Tan) {
+      args[0] = binary(Op::Multiply, at, args[0], constant(degrees_per_radian));
+      return fold(add(op, at, args[0]));
+    }
+    const int result =
+        fold(add(op, at, args[0], args.size() > 1 ? args[1] : -1));
+    if (op == Op::Asin || op == Op::Acos || op == Op::Atan || op == Op::Atan2) {
+      return binary(Op::Multiply, at, result,
+                    constant(1.0 / degrees_per_radian));
+    }
+    return result;
   }
 
   // Appends the postfix code of a subtree; returns its stack depth.

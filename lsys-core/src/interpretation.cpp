@@ -351,7 +351,8 @@ class Interpreter {
           *grammar_.source,
           place_of(
               grammar_,
-              {TurtleCommand::ColorNext, TurtleCommand::ColorPrevious},
+              {TurtleCommand::ColorNext, TurtleCommand::ColorPrevious,
+               TurtleCommand::ColorAdd},
               [](double v) { return !is_color_index(v); },
               grammar_.axiom_offset),
           "colour index " + number_text(c) + " is out of range 0 to " +

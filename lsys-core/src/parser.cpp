@@ -5,6 +5,8 @@
 // notation and hands it to that notation's front end (src/dialects/).
 #include "lsys/parser.hpp"
 
+#include <string>
+
 #include "dialects/front_ends.hpp"
 #include "lsys/diagnostic.hpp"
 
@@ -19,7 +21,16 @@ Grammar parse_grammar(std::shared_ptr<const SourceFile> source,
                                 .message = "the text is longer than 4 GiB"});
   }
   check_text(*source);
-  switch (options.dialect.value_or(detect_dialect(source->text()))) {
+  const Dialect dialect =
+      options.dialect.value_or(detect_dialect(source->text(), source->name()));
+  if (!options.system.empty() && dialect != Dialect::Fractint) {
+    throw ParseError(Diagnostic{
+        .file = source->name(),
+        .message = "--system picks one system of a Fractint file; this file "
+                   "is read as " +
+                   std::string(dialect_name(dialect)) + " (--dialect)"});
+  }
+  switch (dialect) {
     case Dialect::Lparser:
       return dialects::read_lparser(std::move(source), options);
     case Dialect::Fractint:

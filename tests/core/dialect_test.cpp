@@ -30,6 +30,25 @@ TEST(Dialect, TellsEachNotationFromItsFirstLines) {
   EXPECT_EQ(detect_dialect("A \u2192 {F}\nA\n"), Dialect::Ls);
 }
 
+TEST(Dialect, TrustsTheFileNameWhereTheTextCouldBeEither) {
+  // lsolid's notation reads L-Py-shaped files: named .ls, they stay its own.
+  const char* lpy_shaped =
+      "n=2\nangle=90\nAxiom: F-F-F-F\nproduction:\nF --> F+F-F-FF+F+F-F\n";
+  EXPECT_EQ(detect_dialect(lpy_shaped, "island.ls"), Dialect::Ls);
+  EXPECT_EQ(detect_dialect(lpy_shaped, "island.lpy"), Dialect::Lpy);
+  EXPECT_EQ(detect_dialect("Axiom: F\ninterpretation:\n", "a.lpy"),
+            Dialect::Lpy);
+  // A polygon axiom is not a Fractint system, least of all in a .ls file.
+  EXPECT_EQ(detect_dialect("L{.F.F.}\nn=1\n", "leaf.ls"), Dialect::Ls);
+  EXPECT_EQ(detect_dialect("Koch {\n angle 6\n}\n", "k.ls"), Dialect::Ls);
+  // Lparser reads its numbers with sscanf: words may follow them.
+  EXPECT_EQ(detect_dialect("2   recursion\n22  angle\n10\nF\n@\n", "t.ls"),
+            Dialect::Lparser);
+  // A comment block on one line, then the system.
+  EXPECT_EQ(detect_dialect("comment { one line }\nKoch {\n angle 6\n}\n"),
+            Dialect::Fractint);
+}
+
 TEST(Dialect, TellsTheNotationOfEveryPrintable) {
   // printables/ names files of other notations by their notation.
   const auto dir = testing::source_dir() / "printables";

@@ -128,9 +128,39 @@ TEST(Fractint, RefusesWhatFractintRefusesAtItsPlace) {
   // F turns with + and D with \: two headings in Fractint, one here.
   EXPECT_EQ(located_error_of(
                 [] { (void)fractint("S {\nangle 4\naxiom F+D\\90F\n}\n"); }),
-            "3:9: this system moves with both 'F'/'G' and 'D'/'M' and turns "
-            "with '+'/'-' and '\\'/'/': Fractint keeps two headings for "
-            "them, lsolid one; not supported");
+            "3:9: this system turns with '+', '-' or '|', which Fractint's "
+            "'D' and 'M' do not follow (they keep a heading of their own); "
+            "lsolid's turtle has one heading: not supported");
+}
+
+TEST(Fractint, ReadsRulesAsStrtokCutsThem) {
+  // `f = f+f` and ` =f` (a rule for f that deletes it) are Fractint rules.
+  const Grammar spaced = fractint("S {\n angle 4\n axiom f\n f = f+f\n}\n");
+  EXPECT_EQ(
+      to_string(derive(spaced, {.derivation_length = 1}), spaced.alphabet),
+      "f+f");
+  const Grammar deleted = fractint("S {\n angle 4\n axiom fg\n =f\n}\n");
+  EXPECT_EQ(
+      to_string(derive(deleted, {.derivation_length = 1}), deleted.alphabet),
+      "g");
+}
+
+TEST(Fractint, EndsABlockAtItsFirstBraceAndRefusesOneLeftOpen) {
+  const char* text =
+      "comment { a one-line comment }\nKoch {\n angle 6\n axiom f\n}\n"
+      "Dragon {\n angle 4\n axiom fx\n}\n";
+  EXPECT_EQ(located_error_of([&] { (void)fractint(text); }),
+            "2:1: this file holds 2 systems; choose one with --system NAME: "
+            "Koch, Dragon");
+  EXPECT_EQ(located_error_of([] {
+              (void)fractint(
+                  "Koch {\n angle 6\n axiom f\nDragon {\n"
+                  " angle 4\n axiom fx\n}\n");
+            }),
+            "4:1: a system starts inside 'Koch {' (line 1), which has no "
+            "closing '}' line");
+  EXPECT_EQ(located_error_of([] { (void)fractint("Koch {\n angle 6\n"); }),
+            "1:1: 'Koch {' has no closing '}' line");
 }
 
 }  // namespace

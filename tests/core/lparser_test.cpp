@@ -114,5 +114,10 @@ TEST(Lparser, RefusesWhatItCannotReadAtItsPlace) {
             "2:1: expected the angle, a number on a line of its own");
 }
 
+TEST(Lparser, LetsAnyModuleCarryAParameterOrNone) {
+  // A(2)B with A=AB, B=A: the (2) stays behind A's successor, AB(2).
+  EXPECT_EQ(derived_lparser("2\n22\n10\nA(2)B\nA=AB\nB=A\n@\n"), "ABA(2)AB");
+}
+
 }  // namespace
 }  // namespace lsys

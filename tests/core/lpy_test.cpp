@@ -137,5 +137,22 @@ TEST(Lpy, RefusesModulesItCannotBuildByTheirWholeName) {
   EXPECT_EQ(s.segments.size(), 2U);
 }
 
+TEST(Lpy, TakesAnglesInRadiansInExpressionsAsPythonsMathDoes) {
+  const Skeleton s = drawn("F(sin(pi/2))F(2*atan(1))");
+  ASSERT_EQ(s.segments.size(), 2U);
+  expect_near(s.segments[0].p1, {0, 0, 1});
+  expect_near(s.segments[1].p1, {0, 0, 1 + std::acos(-1.0) / 2});
+}
+
+TEST(Lpy, TakesTheTurtlesSettingsFromTheEditorsBlock) {
+  const Skeleton s = interpret(
+      lpy("Axiom: F+F\nderivation length: 0\nproduction:\nendlsystem\n"
+          "###### INITIALISATION ######\n"
+          "def __initialiseContext__(context):\n"
+          "\tcontext.turtle.setAngleIncrement(90)\n"));
+  ASSERT_EQ(s.segments.size(), 2U);
+  expect_near(s.segments[1].p1, {-1, 0, 1});
+}
+
 }  // namespace
 }  // namespace lsys

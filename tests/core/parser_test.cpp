@@ -14,6 +14,15 @@ using testing::located_error;
 using testing::parse;
 using testing::parse_error;
 
+std::string parse_error_of_system(std::string_view text, std::string system) {
+  try {
+    (void)parse(text, {.system = std::move(system)});
+  } catch (const ParseError& e) {
+    return e.diagnostic().message;
+  }
+  return "no error";
+}
+
 TEST(Parser, AcceptsEveryArrow) {
   for (const char* arrow : {"\u2192", "->", "-->", "::=", "=", "\u27F6"}) {
     const std::string text = std::string("axiom: F\nF ") + arrow + " F+F\nn=1";
@@ -456,6 +465,12 @@ TEST(Parser, ContinuesALongAxiomOnIndentedLines) {
 
 TEST(Parser, EndsADefineAtACommentAsTheCPreprocessorDoes) {
   EXPECT_EQ(derived("#define R 0.5 // ratio\nn=1\nF\nF -> F(R)"), "F(0.5)");
+}
+
+TEST(Parser, RefusesASystemNameForANotationOfOneSystem) {
+  EXPECT_EQ(parse_error_of_system("F\nF -> FF\n", "Koch"),
+            "--system picks one system of a Fractint file; this file is "
+            "read as ls (--dialect)");
 }
 
 }  // namespace

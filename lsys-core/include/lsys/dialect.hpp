@@ -16,11 +16,15 @@ enum class Dialect {
   Lpy,       ///< L-Py's declarative part: `Axiom:`, `production:`
 };
 
-/// The notation a text is written in, judged from its lines: an Lparser
-/// file starts (after `#` comments) with lines holding one number each, a
-/// Fractint file with `Name {`, an L-Py file has `Axiom:` and
-/// `production:` lines; anything else is lsolid's own.
-[[nodiscard]] Dialect detect_dialect(std::string_view text);
+/// The notation of a text, from its file name's extension and its lines:
+/// `.lpy` is L-Py; a file that starts (after `#` comments) with two lines
+/// that each begin with a number is Lparser; one whose first line (after
+/// `;` comments and one-line `{ … }` blocks) is `Name {` is Fractint,
+/// unless it is named `.ls`; one that is named neither `.ls` nor `.l` and
+/// has `Axiom:` and `production:` lines is L-Py; anything else is lsolid's
+/// own (which reads L-Py-shaped `.ls` files as it always has).
+[[nodiscard]] Dialect detect_dialect(std::string_view text,
+                                     std::string_view file_name = {});
 
 /// The name `--dialect` takes: `ls`, `lparser`, `fractint`, `lpy`.
 [[nodiscard]] std::string_view dialect_name(Dialect dialect) noexcept;

@@ -23,6 +23,9 @@ struct ExpressionScope {
   const std::map<std::string, double>* constants = nullptr;
   /// When set, receives the names of the constants the expression reads.
   std::set<std::string>* used_constants = nullptr;
+  /// Trigonometric functions take and give radians (Python's math, as L-Py
+  /// files use it) instead of degrees (cpfg).
+  bool radians = false;
 };
 
 /// An arithmetic or logical expression compiled once into code for a small

@@ -105,6 +105,11 @@ struct Syntax {
   /// `%` cuts the branch and `*` is any module in a context; without them
   /// both are modules of the notation's table (Lparser's `%` rolls 180°).
   bool cut_and_wildcard = true;
+  /// A module other than the turtle's takes the same number of parameters
+  /// everywhere; without it, any (Lparser's parameters are text behind it).
+  bool fixed_arity = true;
+  /// Trigonometric functions in radians (L-Py's Python), not degrees.
+  bool radians = false;
 };
 
 /// What a front end hands the grammar builder: the pieces of a file sorted

@@ -14,6 +14,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "dialects/front_ends.hpp"
 #include "dialects/grammar_builder.hpp"
@@ -100,16 +101,20 @@ class FractintReader : TextScan {
     draft.defaults.angle_deg = 360.0 / angle_steps_;
     // `|` turns n/2 steps (integer division) the way `-` turns: 180° for
     // an even n, the largest turn under 180° for an odd one.
-    draft.symbols.push_back(
-        {"|", TurtleCommand::TurnRightFixed,
-         (angle_steps_ / 2) * 360.0 / static_cast<double>(angle_steps_)});
+    for (SymbolCommand& symbol : draft.symbols) {
+      if (symbol.name == "|") {
+        symbol.default_parameter =
+            (angle_steps_ / 2) * 360.0 / static_cast<double>(angle_steps_);
+      }
+    }
     reject_two_headings(draft);
     return build_grammar(*this, std::move(draft), options_);
   }
 
  private:
-  // Every `Name {` of the file, with its body. A nameless block and one
-  // named `comment` are comments (Fractint leaves them out of its list).
+  // Every `Name {` of the file, with its body, which runs to the first
+  // `}` (Fractint's scan_entries). A nameless block and one named `comment`
+  // are comments (Fractint leaves them out of its list).
   std::vector<Entry> entries() const {
     std::vector<Entry> out;
     std::size_t start = 0;
@@ -126,30 +131,40 @@ class FractintReader : TextScan {
                  std::string_view::npos) {
         ++name_end;
       }
-      Entry entry{Range{line.begin, name_end}, Range{brace + 1, text_.size()}};
-      // The body runs to the first line whose first token is `}`.
-      std::size_t at = brace + 1;
-      while (at < text_.size()) {
-        std::size_t e = text_.find('\n', at);
-        if (e == std::string::npos) e = text_.size();
-        const Range body_line = trim(Range{at, e});
-        if (!body_line.empty() && text_[body_line.begin] == '}') {
-          entry.body.end = body_line.begin;
-          start = e + 1;
-          break;
-        }
-        at = e + 1;
-        start = at;
+      const Range name{line.begin, name_end};
+      const bool comment = name.empty() || view(name) == "comment";
+      const std::size_t close = text_.find('}', brace + 1);
+      if (close == std::string::npos) {
+        if (comment) break;
+        fail(name.begin,
+             "'" + original_name(name) + " {' has no closing '}' line");
       }
-      if (entry.name.empty() || view(entry.name) == "comment") continue;
-      out.push_back(entry);
+      if (!comment) {
+        reject_inner_start(name, Range{brace + 1, close});
+        out.push_back(Entry{name, Range{brace + 1, close}});
+      }
+      end = text_.find('\n', close);
+      start = end == std::string::npos ? text_.size() : end + 1;
     }
     return out;
   }
 
-  std::string original_name(const Entry& entry) const {
-    return source_->text().substr(entry.name.begin,
-                                  entry.name.end - entry.name.begin);
+  // A system that starts before the one above it has closed: that one
+  // lacks its `}`.
+  void reject_inner_start(Range name, Range body) const {
+    for (const Range& raw : lines(body)) {
+      const Range line = trim(raw);
+      const std::size_t brace = find_in(line, "{");
+      if (brace == std::string::npos || brace == line.begin) continue;
+      fail(line.begin, "a system starts inside '" + original_name(name) +
+                           " {' (line " +
+                           std::to_string(source_->location(name.begin).line) +
+                           "), which has no closing '}' line");
+    }
+  }
+
+  std::string original_name(Range name) const {
+    return source_->text().substr(name.begin, name.end - name.begin);
   }
 
   static std::string key(std::string_view name) {
@@ -163,7 +178,7 @@ class FractintReader : TextScan {
     std::string names;
     for (const Entry& e : entries) {
       if (!names.empty()) names += ", ";
-      names += original_name(e);
+      names += original_name(e.name);
     }
     if (options_.system.empty()) {
       if (entries.size() == 1) return entries.front();
@@ -178,11 +193,10 @@ class FractintReader : TextScan {
                                          "' in this file; it holds " + names);
   }
 
-  // The token at `at`: a run of characters other than the delimiters.
+  // The token at `at`, as strtok cuts it: delimiters before it skipped.
   Range token(std::size_t at, std::size_t end,
               std::string_view delimiters) const {
-    while (at < end &&
-           std::string_view(" \t").find(text_[at]) != std::string_view::npos) {
+    while (at < end && delimiters.find(text_[at]) != std::string_view::npos) {
       ++at;
     }
     std::size_t stop = at;
@@ -200,10 +214,12 @@ class FractintReader : TextScan {
   void read_line(Range line) {
     const Range first = token(line.begin, line.end, " \t=");
     const std::string_view word = view(first);
-    std::size_t next = first.end;
-    if (next < line.end && text_[next] == '=') ++next;
+    const std::size_t next = first.end;
     if (word == "axiom") {
-      const Range value = token(next, line.end, " \t");
+      // `axiom=FX` works (`=` ends the keyword), `axiom = FX` does not.
+      const Range value =
+          token(next < line.end && text_[next] == '=' ? next + 1 : next,
+                line.end, " \t");
       if (value.empty()) fail(first.end, "expected the axiom after 'axiom'");
       if (draft_.axiom) fail(first.begin, "a second axiom");
       draft_.axiom = value;
@@ -211,7 +227,7 @@ class FractintReader : TextScan {
       return;
     }
     if (word == "angle") {
-      const Range value = token(next, line.end, " \t");
+      const Range value = token(next, line.end, " \t=");
       const std::string_view digits = view(value);
       int n = 0;
       if (digits.empty() || digits.size() > 3 ||
@@ -231,7 +247,7 @@ class FractintReader : TextScan {
       reject_extra(value.end, line.end);
       return;
     }
-    if (code_point_length(word) != word.size()) {
+    if (word.empty() || code_point_length(word) != word.size()) {
       fail(first.begin,
            "expected 'axiom', 'angle', a rule such as 'F=F+F' "
            "or '}', not '" +
@@ -327,11 +343,17 @@ class FractintReader : TextScan {
         if (c == 'd' || c == 'm') degree_move = degree_move.value_or(i);
       }
     }
-    if ((index_turn && degree_move) || (degree_turn && index_move)) {
-      fail(index_turn && degree_move ? *degree_move : *index_move,
-           "this system moves with both 'F'/'G' and 'D'/'M' and turns with "
-           "'+'/'-' and '\\'/'/': Fractint keeps two headings for them, "
-           "lsolid one; not supported");
+    if (index_turn && degree_move) {
+      fail(*degree_move,
+           "this system turns with '+', '-' or '|', which Fractint's 'D' and "
+           "'M' do not follow (they keep a heading of their own); lsolid's "
+           "turtle has one heading: not supported");
+    }
+    if (degree_turn && index_move) {
+      fail(*index_move,
+           "this system turns with '\\' or '/', which Fractint's 'F' and "
+           "'G' do not follow (they keep a heading of their own); lsolid's "
+           "turtle has one heading: not supported");
     }
   }
 

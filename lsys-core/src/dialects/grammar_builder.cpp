@@ -34,6 +34,7 @@ std::vector<DeclaredName> module_names(const TextScan& scan, Range names) {
            text[j] != '(') {
       ++j;
     }
+    if (j == i) scan.fail(i, "expected a module name before '('");
     DeclaredName declared{Range{i, j}};
     while (j < names.end && is_blank(text[j])) ++j;
     if (j < names.end && text[j] == '(') {
@@ -116,7 +117,8 @@ class GrammarBuilder : TextScan {
   bool is_constant_condition(Range r) const {
     try {
       (void)parse_expression(source_, r.begin, r.end,
-                             ExpressionScope{.constants = &grammar_.constants});
+                             ExpressionScope{.constants = &grammar_.constants,
+                                             .radians = draft_.syntax.radians});
       return true;
     } catch (const ParseError&) {
       return false;
@@ -241,7 +243,8 @@ class GrammarBuilder : TextScan {
       const Expression value =
           parse_expression(source, equals + 1, define.size(),
                            ExpressionScope{.constants = &grammar_.constants,
-                                           .used_constants = &used_constants_});
+                                           .used_constants = &used_constants_,
+                                           .radians = draft_.syntax.radians});
       grammar_.constants[name] = value.constant_value();
       given.insert(name);
       given_defines_.push_back(name);
@@ -264,7 +267,8 @@ class GrammarBuilder : TextScan {
   double constant(Range r) const {
     return parse_expression(source_, r.begin, r.end,
                             ExpressionScope{.constants = &grammar_.constants,
-                                            .used_constants = &used_constants_})
+                                            .used_constants = &used_constants_,
+                                            .radians = draft_.syntax.radians})
         .constant_value();
   }
 
@@ -369,6 +373,8 @@ class GrammarBuilder : TextScan {
       }
       return;
     }
+    // Lparser's parameters are text behind a module, not part of it.
+    if (!draft_.syntax.fixed_arity) return;
     const auto [it, inserted] =
         arity_.emplace(symbol, std::pair{count, offset});
     if (inserted || it->second.first == count) return;
@@ -563,7 +569,8 @@ class GrammarBuilder : TextScan {
     }
     const ExpressionScope scope{.parameters = slots,
                                 .constants = &grammar_.constants,
-                                .used_constants = &used_constants_};
+                                .used_constants = &used_constants_,
+                                .radians = draft_.syntax.radians};
     if (lhs.condition) {
       p.condition = parse_expression(source_, lhs.condition->begin,
                                      lhs.condition->end, scope);
@@ -628,7 +635,8 @@ class GrammarBuilder : TextScan {
            "modules before the productions");
     }
     const ExpressionScope scope{.constants = &grammar_.constants,
-                                .used_constants = &used_constants_};
+                                .used_constants = &used_constants_,
+                                .radians = draft_.syntax.radians};
     std::vector<Range> ranges{*draft_.axiom};
     ranges.insert(ranges.end(), draft_.axiom_more.begin(),
                   draft_.axiom_more.end());
@@ -680,8 +688,11 @@ class GrammarBuilder : TextScan {
         continue;
       }
       std::size_t separator = setting.key_range.end;
-      while (is_blank(text_[separator])) ++separator;
-      if (text_[separator] == '=' && setting.key != Key::Axiom &&
+      while (separator < text_.size() && is_blank(text_[separator])) {
+        ++separator;
+      }
+      if (separator < text_.size() && text_[separator] == '=' &&
+          setting.key != Key::Axiom &&
           code_point_length(key_text) == key_text.size()) {
         letter_settings_.push_back(setting);
       }

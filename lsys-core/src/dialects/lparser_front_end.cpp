@@ -15,6 +15,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "dialects/front_ends.hpp"
 #include "dialects/grammar_builder.hpp"
@@ -151,7 +152,8 @@ class LparserReader : TextScan {
     draft.syntax = Syntax{.contexts_and_conditions = false,
                           .probability_after_successor = false,
                           .parameter_lists = true,
-                          .cut_and_wildcard = false};
+                          .cut_and_wildcard = false,
+                          .fixed_arity = false};
     draft.symbols = kSymbols;
     Grammar grammar = build_grammar(*this, std::move(draft), options_);
     pass_parameters_on(grammar);

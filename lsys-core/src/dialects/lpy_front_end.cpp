@@ -15,6 +15,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "dialects/front_ends.hpp"
 #include "dialects/grammar_builder.hpp"
@@ -132,6 +133,18 @@ class LpyReader : TextScan {
     std::size_t end = source_->text().find(kInitialisation);
     if (end == std::string::npos) end = text_.size();
     for (const Range& line : lines(Range{0, end})) read_line(line);
+    // Of the editor's block, the turtle's settings count: L-Py applies them
+    // before the L-system runs.
+    // (materials and other calls there are the editor's, not the model's).
+    for (const Range& line : lines(Range{end, text_.size()})) {
+      const std::string_view text = view(trim(line));
+      if (text.starts_with("context.turtle.set") &&
+          (text.find("AngleIncrement(") != std::string_view::npos ||
+           text.find("DefaultStep(") != std::string_view::npos ||
+           text.find("WidthIncrement(") != std::string_view::npos)) {
+        turtle_setting(trim(line));
+      }
+    }
     Settings& s = draft_.defaults;
     s.angle_deg = 60.0;
     s.step = 1.0;
@@ -143,6 +156,7 @@ class LpyReader : TextScan {
     s.roll = RollConvention::Lpfg;
     draft_.symbols = kSymbols;
     draft_.refused = kRefused;
+    draft_.syntax.radians = true;
     draft_.warnings = std::move(grammar_warnings_);
     draft_.constants = {
         {"True", 1.0}, {"False", 0.0}, {"pi", 3.14159265358979323846}};
@@ -330,14 +344,13 @@ class LpyReader : TextScan {
   // context().turtle.setAngleIncrement(90) and its kin.
   void turtle_setting(Range line) {
     const std::string_view text = view(line);
+    const std::string_view object = text.substr(
+        0, text.find("turtle.") + std::string_view("turtle.").size());
     for (const auto& [method, key] :
          {std::pair{"setAngleIncrement(", Key::Angle},
           std::pair{"setDefaultStep(", Key::Step},
           std::pair{"setWidthIncrement(", Key::WidthIncrement}}) {
-      const std::string prefix =
-          std::string(text.starts_with("exec") ? "execContext().turtle."
-                                               : "context().turtle.") +
-          method;
+      const std::string prefix = std::string(object) + method;
       if (text.starts_with(prefix) && text.ends_with(")")) {
         const Range value{line.begin + prefix.size(), line.end - 1};
         setting(key, line, trim(value));

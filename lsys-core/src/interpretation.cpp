@@ -354,7 +354,11 @@ class Interpreter {
               {TurtleCommand::ColorNext, TurtleCommand::ColorPrevious,
                TurtleCommand::ColorAdd},
               [](double v) { return !is_color_index(v); },
-              grammar_.axiom_offset),
+              // A sum of Fractint's `<nn` leaves the range with no bad
+              // parameter of its own: name the first such module.
+              find_module(grammar_, {TurtleCommand::ColorAdd},
+                          [](std::span<const Expression>) { return true; })
+                  .value_or(grammar_.axiom_offset)),
           "colour index " + number_text(c) + " is out of range 0 to " +
               std::to_string(kMaxColorIndex));
     }

@@ -163,5 +163,15 @@ TEST(Fractint, EndsABlockAtItsFirstBraceAndRefusesOneLeftOpen) {
             "1:1: 'Koch {' has no closing '}' line");
 }
 
+TEST(Fractint, PlacesAColourSumOutOfRangeAtTheModuleThatAdds) {
+  EXPECT_EQ(located_error_of([] {
+              Grammar g =
+                  fractint("S {\n angle 4\n axiom ff\n f=f<600000\n}\n");
+              g.settings.derivation_length = 2;
+              (void)interpret(g);
+            }),
+            "4:5: colour index 1200015 is out of range 0 to 1048576");
+}
+
 }  // namespace
 }  // namespace lsys

@@ -107,12 +107,10 @@ class LparserReader : TextScan {
     }
     const char* const header[] = {"the recursion depth", "the angle",
                                   "the thickness (a percentage of length)"};
-    for (std::size_t k = 0; k < 3; ++k) {
-      if (k >= words.size()) {
-        fail(text_.size(), std::string("expected ") + header[k] +
-                               " on a line of its own: an Lparser file "
-                               "starts with three numbers");
-      }
+    if (words.size() < 3) {
+      fail(text_.size(), std::string("expected ") + header[words.size()] +
+                             " on a line of its own: an Lparser file "
+                             "starts with three numbers");
     }
     Draft draft;
     Settings& s = draft.defaults;

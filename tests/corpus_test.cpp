@@ -33,7 +33,7 @@ using lsolid::testing::kCorpus;
 using lsolid::testing::name_of;
 
 TEST(CorpusManifest, HoldsAtLeastFiveSystemsOfEachNotation) {
-  for (const char* notation : {"lparser/", "fractint/", "lpy/"}) {
+  for (const char* notation : {"lparser/", "fractint/", "lpy/", "cpfg/"}) {
     const auto entries = corpus();
     EXPECT_GE(std::count_if(entries.begin(), entries.end(),
                             [&](const Entry& e) {

@@ -10,11 +10,12 @@
 namespace lsys {
 namespace {
 
-constexpr std::array<std::pair<std::string_view, Dialect>, 4> kNames{{
+constexpr std::array<std::pair<std::string_view, Dialect>, 5> kNames{{
     {"ls", Dialect::Ls},
     {"lparser", Dialect::Lparser},
     {"fractint", Dialect::Fractint},
     {"lpy", Dialect::Lpy},
+    {"cpfg", Dialect::Cpfg},
 }};
 
 std::string_view trimmed(std::string_view s) {
@@ -70,6 +71,18 @@ bool is_system_start(std::string_view line) {
   });
 }
 
+// `Lsystem: 1`, `lsystem:1`: cpfg's first statement, which no other
+// notation writes.
+bool is_lsystem_label(std::string_view line) {
+  constexpr std::string_view kWord = "lsystem";
+  if (line.size() < kWord.size()) return false;
+  for (std::size_t i = 0; i < kWord.size(); ++i) {
+    if (std::tolower(static_cast<unsigned char>(line[i])) != kWord[i])
+      return false;
+  }
+  return trimmed(line.substr(kWord.size())).starts_with(":");
+}
+
 bool ends_with(std::string_view name, std::string_view extension) {
   if (name.size() < extension.size()) return false;
   return std::equal(extension.begin(), extension.end(),
@@ -91,6 +104,7 @@ Dialect detect_dialect(std::string_view text, std::string_view file_name) {
   bool axiom = false;
   bool production = false;
   bool in_comment_block = false;
+  bool lsystem = false;
   for_each_line(text, [&](std::string_view line) {
     if (line.empty()) return true;
     if (first && line.front() == ';') return true;
@@ -118,13 +132,15 @@ Dialect detect_dialect(std::string_view text, std::string_view file_name) {
       numbers = is_number_line(line) ? numbers + 1 : -1;
     }
     if (line.front() != '#') first = false;
+    lsystem = lsystem || is_lsystem_label(line);
     axiom = axiom || line.starts_with("Axiom:") || line.starts_with("Axiom :");
     production = production || line.starts_with("production:") ||
                  line.starts_with("production :");
-    return !(axiom && production) && numbers < 2;
+    return !(axiom && production) && numbers < 2 && !lsystem;
   });
   if (fractint) return Dialect::Fractint;
   if (numbers >= 2) return Dialect::Lparser;
+  if (lsystem && !named_ls) return Dialect::Cpfg;
   if (axiom && production && !named_ls && !named_l) return Dialect::Lpy;
   return Dialect::Ls;
 }

@@ -158,6 +158,13 @@ class Interpreter {
       }
     }
     if (++modules_read_ > max_modules_) on_limit_();
+    if (symbol < grammar_.parameters_read.size() &&
+        grammar_.parameters_read[symbol] &&
+        params.size() >
+            static_cast<std::size_t>(*grammar_.parameters_read[symbol])) {
+      params = params.first(
+          static_cast<std::size_t>(*grammar_.parameters_read[symbol]));
+    }
     if (params.empty() && symbol < grammar_.default_parameters.size() &&
         grammar_.default_parameters[symbol]) {
       params =
@@ -323,6 +330,11 @@ class Interpreter {
         return;
       case TurtleCommand::SetElasticity:
         state_.elasticity = params[0];
+        return;
+      case TurtleCommand::ElasticityChange:
+        state_.elasticity =
+            params.empty() ? state_.elasticity + settings_.elasticity_increment
+                           : params[0];
         return;
       case TurtleCommand::MultiplyStep:
         if (!params.empty()) state_.step *= params[0];

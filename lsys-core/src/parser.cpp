@@ -30,6 +30,13 @@ Grammar parse_grammar(std::shared_ptr<const SourceFile> source,
                    "is read as " +
                    std::string(dialect_name(dialect)) + " (--dialect)"});
   }
+  if (!options.view_file.empty() && dialect != Dialect::Cpfg) {
+    throw ParseError(Diagnostic{
+        .file = source->name(),
+        .message = "--view gives a cpfg file its view file; this file is "
+                   "read as " +
+                   std::string(dialect_name(dialect)) + " (--dialect)"});
+  }
   switch (dialect) {
     case Dialect::Lparser:
       return dialects::read_lparser(std::move(source), options);
@@ -37,6 +44,8 @@ Grammar parse_grammar(std::shared_ptr<const SourceFile> source,
       return dialects::read_fractint(std::move(source), options);
     case Dialect::Lpy:
       return dialects::read_lpy(std::move(source), options);
+    case Dialect::Cpfg:
+      return dialects::read_cpfg(std::move(source), options);
     case Dialect::Ls:
       break;
   }

@@ -16,42 +16,80 @@
 
 namespace lsys {
 
-SourceFile::SourceFile(std::string name, std::string text)
-    : name_(std::move(name)), text_(std::move(text)) {
-  // A UTF-8 byte order mark is not part of the text; old Mac files end
-  // lines with a lone CR.
-  if (text_.starts_with("\xEF\xBB\xBF")) text_.erase(0, 3);
-  for (std::size_t i = 0; i < text_.size(); ++i) {
-    if (text_[i] == '\r' && (i + 1 == text_.size() || text_[i + 1] != '\n')) {
-      text_[i] = '\n';
+namespace {
+
+// A UTF-8 byte order mark is not part of the text; old Mac files end lines
+// with a lone CR.
+void normalise(std::string& text) {
+  if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n')) {
+      text[i] = '\n';
     }
-  }
-  line_starts_.push_back(0);
-  for (std::size_t i = 0; i < text_.size(); ++i) {
-    if (text_[i] == '\n' && i + 1 < text_.size()) line_starts_.push_back(i + 1);
   }
 }
 
-SourceLocation SourceFile::location(std::size_t offset) const {
+std::vector<std::size_t> line_starts(const std::string& text) {
+  std::vector<std::size_t> starts{0};
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\n' && i + 1 < text.size()) starts.push_back(i + 1);
+  }
+  return starts;
+}
+
+}  // namespace
+
+SourceFile::SourceFile(std::string name, std::string text)
+    : name_(std::move(name)), text_(std::move(text)) {
+  normalise(text_);
+  line_starts_ = line_starts(text_);
+}
+
+SourceFile::SourceFile(std::string name, std::string original, std::string text,
+                       std::vector<SourceSpan> spans)
+    : name_(std::move(name)),
+      text_(std::move(text)),
+      original_(std::move(original)),
+      spans_(std::move(spans)) {
+  line_starts_ = line_starts(original_);
+}
+
+std::size_t SourceFile::original_offset(std::size_t offset) const {
+  if (spans_.empty()) return offset;
+  auto it = std::upper_bound(
+      spans_.begin(), spans_.end(), offset,
+      [](std::size_t o, const SourceSpan& s) { return o < s.text_begin; });
+  if (it == spans_.begin()) return 0;
+  const SourceSpan& span = *--it;
+  if (!span.verbatim) return span.original_begin;
+  return std::min(
+      original_.size(),
+      span.original_begin + std::min(offset - span.text_begin, span.length));
+}
+
+SourceLocation SourceFile::location(std::size_t text_offset) const {
+  const std::size_t offset = original_offset(text_offset);
+  const std::string& text = original();
   const auto it =
       std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
   const auto line = static_cast<int>(it - line_starts_.begin());
   const std::size_t start = line_starts_[static_cast<std::size_t>(line - 1)];
   int column = 1;
-  const std::string_view text(text_);
-  for (std::size_t i = start; i < offset && i < text.size();
-       i += code_point_length(text.substr(i))) {
+  const std::string_view view(text);
+  for (std::size_t i = start; i < offset && i < view.size();
+       i += code_point_length(view.substr(i))) {
     ++column;
   }
   return {line, column};
 }
 
 std::string_view SourceFile::line_text(int line) const {
+  const std::string& text = original();
   const std::size_t start = line_starts_[static_cast<std::size_t>(line - 1)];
-  std::size_t end = text_.find('\n', start);
-  if (end == std::string::npos) end = text_.size();
-  if (end > start && text_[end - 1] == '\r') --end;
-  return std::string_view(text_).substr(start, end - start);
+  std::size_t end = text.find('\n', start);
+  if (end == std::string::npos) end = text.size();
+  if (end > start && text[end - 1] == '\r') --end;
+  return std::string_view(text).substr(start, end - start);
 }
 
 std::shared_ptr<const SourceFile> load_source(const std::filesystem::path& path,

@@ -29,6 +29,7 @@ struct GrammarInput {
   std::optional<std::string> roll;
   std::optional<std::string> dialect;  ///< --dialect
   std::string system;                  ///< --system
+  std::string view_file;               ///< --view
 };
 
 /// A whole number typed for an option: decimal digits only, from `least` to

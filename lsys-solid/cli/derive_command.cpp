@@ -36,13 +36,18 @@ void add_grammar_options(CLI::App& command, GrammarInput& input, bool with_roll,
       ->allow_extra_args(false);
   command
       .add_option("--dialect", input.dialect,
-                  "the file's notation: ls, lparser, fractint or lpy "
+                  "the file's notation: ls, lparser, fractint, lpy or cpfg "
                   "(default: detected from the file)")
-      ->check(CLI::IsMember({"ls", "lparser", "fractint", "lpy"}));
+      ->check(CLI::IsMember({"ls", "lparser", "fractint", "lpy", "cpfg"}));
   command
       .add_option("--system", input.system,
                   "in a file of several systems (Fractint), the one to read")
       ->type_name("NAME");
+  command
+      .add_option("--view", input.view_file,
+                  "cpfg's view file (default: the .v of the same name, or "
+                  "the folder's only .v)")
+      ->type_name("FILE.v");
   const lsys::DerivationOptions defaults;
   command
       .add_option("--max-segments", input.max_segments,
@@ -76,7 +81,8 @@ lsys::Grammar load_grammar(const GrammarInput& input) {
                          .dialect = input.dialect
                                         ? lsys::dialect_named(*input.dialect)
                                         : std::nullopt,
-                         .system = input.system});
+                         .system = input.system,
+                         .view_file = input.view_file});
   for (const std::string& warning : grammar.warnings) {
     std::fprintf(stderr, "warning: %s\n", warning.c_str());
   }

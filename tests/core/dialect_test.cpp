@@ -70,12 +70,13 @@ TEST(Dialect, TellsTheNotationOfEveryPrintable) {
 }
 
 TEST(Dialect, NamesEachNotationAsDashDashDialectTakesIt) {
-  for (Dialect d :
-       {Dialect::Ls, Dialect::Lparser, Dialect::Fractint, Dialect::Lpy}) {
+  for (Dialect d : {Dialect::Ls, Dialect::Lparser, Dialect::Fractint,
+                    Dialect::Lpy, Dialect::Cpfg}) {
     EXPECT_EQ(dialect_named(dialect_name(d)), d);
   }
   EXPECT_EQ(dialect_name(Dialect::Lparser), "lparser");
-  EXPECT_FALSE(dialect_named("cpfg"));
+  EXPECT_EQ(dialect_name(Dialect::Cpfg), "cpfg");
+  EXPECT_FALSE(dialect_named("lpfg"));
 }
 
 TEST(Dialect, IsForcedByTheParseOptions) {

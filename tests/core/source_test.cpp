@@ -24,6 +24,24 @@ TEST(SourceFile, CountsColumnsInCodePointsNotBytes) {
   EXPECT_EQ(source.location(0).column, 1);
 }
 
+TEST(SourceFile, ReportsPlacesOfAPreprocessedTextInTheOriginal) {
+  // "A LONG B" with LONG expanded to "FF": "A FF B".
+  const SourceFile source(
+      "f.l", "x\nA LONG B\n", "x\nA FF B\n",
+      {SourceSpan{.text_begin = 0, .original_begin = 0, .length = 4},
+       SourceSpan{.text_begin = 4,
+                  .original_begin = 4,
+                  .length = 2,
+                  .verbatim = false},
+       SourceSpan{.text_begin = 6, .original_begin = 8, .length = 3}});
+  EXPECT_EQ(source.text(), "x\nA FF B\n");
+  EXPECT_EQ(source.original(), "x\nA LONG B\n");
+  EXPECT_EQ(source.location(5).column, 3);  // inside the expansion: LONG
+  EXPECT_EQ(source.location(7).line, 2);
+  EXPECT_EQ(source.location(7).column, 8);  // B
+  EXPECT_EQ(source.line_text(2), "A LONG B");
+}
+
 TEST(SourceFile, GivesLinesWithoutTheirBreaks) {
   const SourceFile source("x.ls", "first\r\nsecond\nthird");
   EXPECT_EQ(source.line_count(), 3);

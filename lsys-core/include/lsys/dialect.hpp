@@ -14,6 +14,7 @@ enum class Dialect {
   Lparser,   ///< Laurens Lapré's Lparser: numeric header lines, `@` ends
   Fractint,  ///< Fractint `.l` files: `Name { … }` systems
   Lpy,       ///< L-Py's declarative part: `Axiom:`, `production:`
+  Cpfg,      ///< cpfg `.l` files: C preprocessor, `Lsystem:`, a `.v` beside
 };
 
 /// The notation of a text, from its file name's extension and its lines:
@@ -21,12 +22,13 @@ enum class Dialect {
 /// that each begin with a number is Lparser; one whose first line (after
 /// `;` comments and one-line `{ … }` blocks) is `Name {` is Fractint,
 /// unless it is named `.ls`; one that is named neither `.ls` nor `.l` and
-/// has `Axiom:` and `production:` lines is L-Py; anything else is lsolid's
-/// own (which reads L-Py-shaped `.ls` files as it always has).
+/// has `Axiom:` and `production:` lines is L-Py; one not named `.ls` with
+/// a line `Lsystem: label` is cpfg; anything else is lsolid's own (which
+/// reads L-Py- and cpfg-shaped `.ls` files as it always has).
 [[nodiscard]] Dialect detect_dialect(std::string_view text,
                                      std::string_view file_name = {});
 
-/// The name `--dialect` takes: `ls`, `lparser`, `fractint`, `lpy`.
+/// The name `--dialect` takes: `ls`, `lparser`, `fractint`, `lpy`, `cpfg`.
 [[nodiscard]] std::string_view dialect_name(Dialect dialect) noexcept;
 
 /// The dialect of a name dialect_name gives, if it is one.

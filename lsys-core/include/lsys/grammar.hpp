@@ -131,6 +131,10 @@ struct Grammar {
   /// where the notation gives one (Lparser's `'` multiplies the length by
   /// 0.9); empty or absent means the command's own default.
   std::vector<std::optional<double>> default_parameters;
+  /// Per symbol, how many of a module's parameters the turtle reads, where
+  /// the notation ignores the rest (cpfg's `+(20,0)` turns 20°, and its
+  /// `F(l,t,c)` moves l); empty or absent means all.
+  std::vector<std::optional<int>> parameters_read;
   Settings settings;
   /// `#define` and `--define` values.
   std::map<std::string, double> constants;

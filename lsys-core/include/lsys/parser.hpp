@@ -27,6 +27,9 @@ struct ParseOptions {
   /// In a file of several systems (Fractint), the one to read, by name
   /// without regard to case; empty reads the only one, or refuses to choose.
   std::string system;
+  /// A cpfg view file (`.v`) to read with a cpfg `.l` file; empty looks
+  /// beside it: the `.v` of the same name, else the folder's only one.
+  std::string view_file;
 };
 
 /// Reads an L-system file in any notation lsolid knows (docs/language.md,

@@ -55,6 +55,8 @@ struct Settings {
   int initial_color = 0;
   glm::dvec3 tropism{0.0, 0.0, -1.0};  ///< T, world coordinates (Z up)
   double elasticity = 0.0;             ///< e; 0 turns tropism off
+  /// What a bare cpfg `_` adds to e (cpfg's `elasticity increment`).
+  double elasticity_increment = 0.0;
   std::uint64_t seed = 0;
   RollConvention roll = RollConvention::Lpfg;
   int maximum_depth = 1;         ///< of homomorphism and decomposition, as cpfg

@@ -19,24 +19,53 @@ struct SourceLocation {
   int column = 0;
 };
 
+/// A run of a preprocessed text and where it came from: bytes
+/// [text_begin, text_begin + length) of the text are bytes from
+/// `original_begin` of the original when `verbatim`, or the expansion of
+/// the macro written at `original_begin` when not.
+struct SourceSpan {
+  std::size_t text_begin = 0;
+  std::size_t original_begin = 0;
+  std::size_t length = 0;
+  bool verbatim = true;
+};
+
 /// The text of one `.ls` file (or of a command-line value), indexed by line
 /// so that byte offsets can be reported as line:column.
+///
+/// A file that a preprocessor rewrote (cpfg runs the C preprocessor) keeps
+/// both texts: parsers read `text()`, and diagnostics report places in the
+/// original, as the user wrote it.
 class SourceFile {
  public:
   /// @param name what diagnostics print as the file name.
   SourceFile(std::string name, std::string text);
+  /// A preprocessed text: `spans` cover `text` in order, without gaps.
+  /// @pre the spans start at 0, follow each other and end at text's end;
+  ///   a verbatim span's bytes are the original's.
+  SourceFile(std::string name, std::string original, std::string text,
+             std::vector<SourceSpan> spans);
 
   /// The file name as given.
   [[nodiscard]] const std::string& name() const noexcept { return name_; }
-  /// The whole text, byte for byte.
+  /// The whole text, byte for byte (after preprocessing, if any).
   [[nodiscard]] const std::string& text() const noexcept { return text_; }
-  /// The line and column of a byte offset.
+  /// The text as written, before preprocessing.
+  [[nodiscard]] const std::string& original() const noexcept {
+    return spans_.empty() ? text_ : original_;
+  }
+  /// The byte offset in original() that a byte offset of text() comes from
+  /// (for a byte of a macro's expansion, the place of the macro's name).
+  /// @pre `offset <= text().size()`.
+  [[nodiscard]] std::size_t original_offset(std::size_t offset) const;
+  /// The line and column in original() of a byte offset of text().
   /// @pre `offset <= text().size()`.
   [[nodiscard]] SourceLocation location(std::size_t offset) const;
-  /// The text of a line without its line break.
+  /// The text of a line of original() without its line break.
   /// @pre `1 <= line <= line_count()`.
   [[nodiscard]] std::string_view line_text(int line) const;
-  /// The number of lines (a final line without a break counts).
+  /// The number of lines of original() (a final line without a break
+  /// counts).
   [[nodiscard]] int line_count() const noexcept {
     return static_cast<int>(line_starts_.size());
   }
@@ -44,6 +73,8 @@ class SourceFile {
  private:
   std::string name_;
   std::string text_;
+  std::string original_;
+  std::vector<SourceSpan> spans_;
   std::vector<std::size_t> line_starts_;
 };
 

@@ -46,6 +46,7 @@ enum class TurtleCommand {
   RandomTurn,      ///< Lparser `~`: turn, pitch, roll at random, ±p degrees
   Gravity,         ///< Lparser `t`: pitch down by p × |horizontal heading|
   RollToVerticalSwappingTurns,  ///< Lparser `$`: `$`, then `+` `-` swapped
+  ElasticityChange,  ///< cpfg `_`: set the elasticity, or add its increment
 };
 
 /// The command a module name has without aliases, if it has one.

@@ -76,6 +76,9 @@ struct SymbolCommand {
   /// The parameter a bare module has in this notation (Lparser's `'`
   /// multiplies the length by 0.9); none when the command has its own.
   std::optional<double> default_parameter;
+  /// How many parameters the turtle reads, where the notation ignores any
+  /// more (Syntax::extra_turtle_parameters); the command's most if absent.
+  std::optional<int> parameters_read;
 };
 
 /// A module a notation names but lsolid cannot build (L-Py's `@O`
@@ -110,6 +113,9 @@ struct Syntax {
   bool fixed_arity = true;
   /// Trigonometric functions in radians (L-Py's Python), not degrees.
   bool radians = false;
+  /// A turtle symbol may carry more parameters than it reads, and the turtle
+  /// ignores the rest (cpfg: `+(20,0)`, `@Ts(1,e)`).
+  bool extra_turtle_parameters = false;
 };
 
 /// What a front end hands the grammar builder: the pieces of a file sorted

@@ -4,6 +4,7 @@
 
 #include <memory>
 
+#include "dialects/draft.hpp"
 #include "lsys/grammar.hpp"
 #include "lsys/parser.hpp"
 #include "lsys/source.hpp"
@@ -14,6 +15,26 @@ namespace lsys::dialects {
 /// @throws ParseError at the place of anything malformed.
 [[nodiscard]] Grammar read_ls(std::shared_ptr<const SourceFile> source,
                               const ParseOptions& options);
+
+/// The line rules of lsolid's notation as another notation keeps them.
+enum class LsVariant {
+  Ls,    ///< `#` alone is a comment
+  Cpfg,  ///< `#` is always a module; cpfg's blocks are refused by name
+};
+
+/// Reads a text by the line rules of lsolid's notation, with a notation's
+/// own symbols, refused names, defaults and syntax (`notation`). cpfg's
+/// files, once preprocessed, are read this way.
+/// @throws ParseError as read_ls.
+[[nodiscard]] Grammar read_ls_lines(std::shared_ptr<const SourceFile> source,
+                                    const ParseOptions& options, Draft notation,
+                                    LsVariant variant);
+
+/// Reads a cpfg `.l` file and the view file beside it
+/// (docs/dialects/cpfg.md).
+/// @throws ParseError as read_ls, in either file.
+[[nodiscard]] Grammar read_cpfg(std::shared_ptr<const SourceFile> source,
+                                const ParseOptions& options);
 
 /// Reads Laurens Lapré's Lparser files (docs/dialects/lparser.md).
 /// @throws ParseError as read_ls.

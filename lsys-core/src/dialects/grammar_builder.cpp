@@ -360,7 +360,8 @@ class GrammarBuilder : TextScan {
     if (command != TurtleCommand::None) {
       const int most = max_parameters(command);
       const int least = min_parameters(command);
-      if (count > most || count < least) {
+      if ((count > most && !draft_.syntax.extra_turtle_parameters) ||
+          count < least) {
         std::string expected =
             least == most
                 ? std::to_string(most)
@@ -439,8 +440,14 @@ class GrammarBuilder : TextScan {
   }
 
   void reject_refused(SymbolId symbol, std::size_t offset) const {
+    const std::string& name = grammar_.alphabet.name(symbol);
     for (const auto& [id, refused] : refused_) {
-      if (id != symbol) continue;
+      // A one-character refused name that is a name's prefix refuses it
+      // too: a predecessor `~f(t)` names cpfg's surface `~` with `f`.
+      const bool prefix = refused->name.size() == 1 &&
+                          !is_word_char(refused->name.front()) &&
+                          name.starts_with(refused->name);
+      if (id != symbol && !prefix) continue;
       std::string message = "'";
       message += refused->name;
       message += "' (";
@@ -858,12 +865,22 @@ class GrammarBuilder : TextScan {
   void build_commands() {
     grammar_.commands.resize(grammar_.alphabet.size());
     grammar_.default_parameters.resize(grammar_.alphabet.size());
+    if (draft_.syntax.extra_turtle_parameters) {
+      grammar_.parameters_read.resize(grammar_.alphabet.size());
+    }
     for (SymbolId s = 0; s < grammar_.alphabet.size(); ++s) {
       grammar_.commands[s] = command_of(s);
+      if (draft_.syntax.extra_turtle_parameters &&
+          grammar_.commands[s] != TurtleCommand::None) {
+        grammar_.parameters_read[s] = max_parameters(grammar_.commands[s]);
+      }
       if (aliases_.count(s) != 0) continue;
       for (const SymbolCommand& symbol : draft_.symbols) {
         if (symbol.name == grammar_.alphabet.name(s)) {
           grammar_.default_parameters[s] = symbol.default_parameter;
+          if (symbol.parameters_read && draft_.syntax.extra_turtle_parameters) {
+            grammar_.parameters_read[s] = symbol.parameters_read;
+          }
         }
       }
     }

@@ -114,30 +114,24 @@ const std::vector<RefusedName> kRefused = {
 };
 
 // Replaces comments by blanks, keeping line breaks and byte offsets:
-// `/* ... */` anywhere, and from a `#` that stands alone as a word (a
-// blank or the line's start before it, a blank or the line's end after
-// it) to the end of the line (`axiom: F   # three`), as L-Py and shells
-// write them. A `#` that touches a module is cpfg's widen (`F#F`,
-// `#(2)`), and one followed by a letter starts a directive.
-std::string blank_comments(const SourceFile& source) {
+// `/* ... */` anywhere, and, when `hash_comments`, from a `#` that stands
+// alone as a word (a blank or the line's start before it, a blank or the
+// line's end after it) to the end of the line (`axiom: F   # three`), as
+// L-Py and shells write them. A `#` that touches a module is cpfg's widen
+// (`F#F`, `#(2)`), and one followed by a letter starts a directive.
+std::string blank_comments(const SourceFile& source, bool hash_comments) {
   std::string out = source.text();
   const auto is_space = [](char c) {
     return c == ' ' || c == '\t' || c == '\n' || c == '\r';
   };
   for (std::size_t i = 0; i < out.size(); ++i) {
-    if (out[i] == '#' && (i == 0 || is_space(out[i - 1])) &&
+    if (hash_comments && out[i] == '#' && (i == 0 || is_space(out[i - 1])) &&
         (i + 1 == out.size() || is_space(out[i + 1]))) {
       for (; i < out.size() && out[i] != '\n'; ++i) out[i] = ' ';
       continue;
     }
     if (out[i] != '/' || i + 1 == out.size() || out[i + 1] != '*') continue;
-    const std::size_t close = out.find("*/", i + 2);
-    if (close == std::string::npos)
-      throw error_at(source, i, "unterminated comment '/*'");
-    for (std::size_t j = i; j < close + 2; ++j) {
-      if (out[j] != '\n') out[j] = ' ';
-    }
-    i = close + 1;
+    i = blank_block_comment(source, out, i);
   }
   return out;
 }
@@ -145,12 +139,14 @@ std::string blank_comments(const SourceFile& source) {
 class LsReader : TextScan {
  public:
   LsReader(std::shared_ptr<const SourceFile> source,
-           const ParseOptions& options)
-      : TextScan(source, blank_comments(*source)), options_(options) {}
+           const ParseOptions& options, Draft notation, LsVariant variant)
+      : TextScan(source, blank_comments(*source, variant == LsVariant::Ls)),
+        options_(options),
+        draft_(std::move(notation)),
+        variant_(variant) {}
 
   Grammar run() {
     sort_lines();
-    draft_.refused = kRefused;
     return build_grammar(*this, std::move(draft_), options_);
   }
 
@@ -472,6 +468,7 @@ class LsReader : TextScan {
 
   // Returns true if the line was (part of) a production.
   bool sort_line(Range line, bool indented, bool after_production) {
+    if (variant_ == LsVariant::Cpfg) refuse_cpfg_only(line);
     if (match_words(line.begin, line.end, "endlsystem") == line.end ||
         match_words(line.begin, line.end, "warnings") == line.end ||
         match_words(line.begin, line.end, "no warnings") == line.end) {
@@ -481,7 +478,12 @@ class LsReader : TextScan {
     // applies to that line only (`aliases: f=F`, `Production rules : A=fA`).
     Section section = section_;
     if (const auto header = match_header(line)) {
-      if (header->second.empty()) {
+      // cpfg's `homomorphism: warnings` asks for messages about depth.
+      if (header->second.empty() ||
+          match_words(header->second.begin, header->second.end, "warnings") ==
+              header->second.end ||
+          match_words(header->second.begin, header->second.end,
+                      "no warnings") == header->second.end) {
         section_ = header->first;
         return false;
       }
@@ -586,8 +588,55 @@ class LsReader : TextScan {
                       value});
       return;
     }
-    if (word == "include") fail(line.begin, "#include is not supported");
+    if (word == "include") {
+      if (view(rest).find("lpfgall.h") != std::string_view::npos) {
+        fail(line.begin,
+             "this is an lpfg file: its rules are C++, and lsolid does not "
+             "read lpfg");
+      }
+      fail(line.begin, "#include is not supported");
+    }
     fail(line.begin, "unknown directive '#" + std::string(word) + "'");
+  }
+
+  // What cpfg files hold that lsolid does not run yet: refused at their
+  // place, by name, rather than misread as settings or productions.
+  void refuse_cpfg_only(Range line) const {
+    static constexpr std::array<std::pair<std::string_view, std::string_view>,
+                                7>
+        kBlocks{{
+            {"start each", "a StartEach: block"},
+            {"starteach", "a StartEach: block"},
+            {"start", "a Start: block"},
+            {"end each", "an EndEach: block"},
+            {"endeach", "an EndEach: block"},
+            {"end", "an End: block"},
+            {"define", "a define: block of arrays"},
+        }};
+    for (const auto& [word, what] : kBlocks) {
+      const auto end = match_words(line.begin, line.end, word);
+      if (!end) continue;
+      std::size_t pos = *end;
+      while (pos < line.end && is_blank(text_[pos])) ++pos;
+      if (pos < line.end && text_[pos] == ':') {
+        fail(line.begin, std::string("cpfg's statements (") +
+                             std::string(what) +
+                             ", global variables) are not supported");
+      }
+    }
+    if (match_words(line.begin, line.end, "ring lsystem") == line.end) {
+      fail(line.begin,
+           "a ring L-system (contexts that wrap around the string) is not "
+           "supported");
+    }
+    if (const auto arrow = find_arrow(line, false)) {
+      const std::size_t brace = find_in(arrow->lhs, "{");
+      if (brace != std::string::npos) {
+        fail(brace,
+             "cpfg's statement blocks '{ ... }' in a production are not "
+             "supported");
+      }
+    }
   }
 
   // True when a line starts with an ABOP label such as `p1:` or `p_2 :`
@@ -608,6 +657,7 @@ class LsReader : TextScan {
 
   const ParseOptions& options_;
   Draft draft_;
+  LsVariant variant_;
   Section section_ = Section::Productions;
   bool has_axiom_setting_ = false;
   bool after_axiom_ = false;      // the last line set or continued the axiom
@@ -618,7 +668,18 @@ class LsReader : TextScan {
 
 Grammar read_ls(std::shared_ptr<const SourceFile> source,
                 const ParseOptions& options) {
-  return LsReader(std::move(source), options).run();
+  Draft notation;
+  notation.refused = kRefused;
+  return LsReader(std::move(source), options, std::move(notation),
+                  LsVariant::Ls)
+      .run();
+}
+
+Grammar read_ls_lines(std::shared_ptr<const SourceFile> source,
+                      const ParseOptions& options, Draft notation,
+                      LsVariant variant) {
+  return LsReader(std::move(source), options, std::move(notation), variant)
+      .run();
 }
 
 }  // namespace lsys::dialects

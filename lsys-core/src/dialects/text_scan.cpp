@@ -26,6 +26,17 @@ bool is_identifier(std::string_view s) {
   return std::all_of(s.begin(), s.end(), is_word_char);
 }
 
+std::size_t blank_block_comment(const SourceFile& source, std::string& text,
+                                std::size_t at) {
+  const std::size_t close = text.find("*/", at + 2);
+  if (close == std::string::npos)
+    throw error_at(source, at, "unterminated comment '/*'");
+  for (std::size_t j = at; j < close + 2; ++j) {
+    if (text[j] != '\n') text[j] = ' ';
+  }
+  return close + 1;
+}
+
 char lower(char c) {
   return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
 }

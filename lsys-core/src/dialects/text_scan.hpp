@@ -33,6 +33,12 @@ struct Arrow {
 [[nodiscard]] bool is_word_char(char c);
 [[nodiscard]] bool is_identifier(std::string_view s);
 [[nodiscard]] char lower(char c);
+/// Blanks the `/* … */` comment that starts at `at` in `text` (a copy of
+/// the source's text), keeping its line breaks; returns the offset of the
+/// comment's last byte.
+/// @throws ParseError at `at` when the comment does not end.
+std::size_t blank_block_comment(const SourceFile& source, std::string& text,
+                                std::size_t at);
 
 /// The lexical layer every notation shares: a source and its text with
 /// the notation's comments blanked out (same length, same line breaks, so

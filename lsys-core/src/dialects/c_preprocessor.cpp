@@ -1,0 +1,630 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// cpfg passes its `.l` and `.v` files through vlabcpp, a copy of GNU cccp,
+// before reading them (cpfg's utility.c, PreprocessFile), so its models use
+// the C preprocessor freely: macros with parameters (`#define br_ang(o,i)
+// (100*func(1,i/(N-1)))`), macros whose body is a module string (`#define
+// F_SPIKE ?(2,1.25)spikef$`), and `#ifdef` switches between variants. This
+// is the part of cccp that such files use, written here because no Debian
+// package offers a C preprocessor as a library that maps its output back to
+// its input, which our diagnostics need.
+#include "dialects/c_preprocessor.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+#include <optional>
+#include <set>
+#include <string_view>
+#include <utility>
+
+#include "dialects/text_scan.hpp"
+#include "lsys/diagnostic.hpp"
+#include "lsys/expression.hpp"
+
+namespace lsys::dialects {
+namespace {
+
+bool is_ident_start(char c) {
+  return std::isalpha(static_cast<unsigned char>(c)) != 0 || c == '_';
+}
+bool is_ident_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+}
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (is_space(s.front()) || s.front() == '\n'))
+    s.remove_prefix(1);
+  while (!s.empty() && (is_space(s.back()) || s.back() == '\n'))
+    s.remove_suffix(1);
+  return s;
+}
+
+struct Macro {
+  std::optional<std::vector<std::string>> parameters;  // function-like
+  std::string body;
+};
+
+// Replaces comments by blanks, keeping line breaks and offsets; string
+// literals (printf formats) are left alone.
+std::string blank_comments(const SourceFile& source) {
+  std::string out = source.text();
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    if (out[i] == '"') {
+      for (++i; i < out.size() && out[i] != '"' && out[i] != '\n'; ++i) {
+        if (out[i] == '\\') ++i;
+      }
+      continue;
+    }
+    if (out[i] != '/' || i + 1 == out.size()) continue;
+    if (out[i + 1] == '/') {
+      for (; i < out.size() && out[i] != '\n'; ++i) out[i] = ' ';
+      continue;
+    }
+    if (out[i + 1] != '*') continue;
+    i = blank_block_comment(source, out, i);
+  }
+  return out;
+}
+
+class Preprocessor {
+ public:
+  Preprocessor(const SourceFile& source, const PreprocessOptions& options)
+      : source_(source), options_(options), clean_(blank_comments(source)) {
+    for (const std::string& d : options.defines) {
+      overridden_.insert(d.substr(0, d.find('=')));
+    }
+  }
+
+  std::shared_ptr<const SourceFile> run() {
+    std::size_t begin = 0;
+    while (begin < clean_.size()) {
+      const std::size_t end = logical_line_end(begin);
+      line(begin, end);
+      if (end < clean_.size()) emit_verbatim(end, end + 1);
+      begin = end + 1;
+    }
+    if (!conditions_.empty()) {
+      throw error_at(source_, conditions_.back().offset,
+                     "'#if' without '#endif'");
+    }
+    return std::make_shared<const SourceFile>(
+        source_.name(), source_.text(), std::move(out_), std::move(spans_));
+  }
+
+ private:
+  struct Condition {
+    bool active;  // this branch is being read
+    bool taken;   // some branch of this #if was taken
+    bool outer;   // the enclosing region is active
+    std::size_t offset;
+  };
+
+  [[noreturn]] void fail(std::size_t offset, std::string message) const {
+    throw error_at(source_, offset, std::move(message));
+  }
+
+  bool active() const {
+    return conditions_.empty() || conditions_.back().active;
+  }
+
+  bool is_directive(std::size_t begin) const {
+    std::size_t i = begin;
+    while (i < clean_.size() && is_space(clean_[i])) ++i;
+    if (i >= clean_.size() || clean_[i] != '#') return false;
+    // `#(2)` and `#F` are cpfg's widen module, not directives.
+    std::size_t j = i + 1;
+    while (j < clean_.size() && is_space(clean_[j])) ++j;
+    return j < clean_.size() &&
+           std::islower(static_cast<unsigned char>(clean_[j])) != 0 &&
+           is_directive_word(j);
+  }
+
+  bool is_directive_word(std::size_t at) const {
+    std::size_t end = at;
+    while (end < clean_.size() && is_ident_char(clean_[end])) ++end;
+    const std::string_view word(clean_.data() + at, end - at);
+    for (std::string_view known :
+         {"define", "undef", "if", "ifdef", "ifndef", "elif", "else", "endif",
+          "include", "error", "pragma", "line", "warning"}) {
+      if (word == known) return true;
+    }
+    return false;
+  }
+
+  // The end (a line break or the text's end) of the statement that starts
+  // at `begin`: `\` splices lines, and so does a tab after a break in cpfg.
+  std::size_t logical_line_end(std::size_t begin) const {
+    const bool directive = is_directive(begin);
+    std::size_t i = begin;
+    for (;;) {
+      const std::size_t end = clean_.find('\n', i);
+      if (end == std::string::npos) return clean_.size();
+      std::size_t last = end;
+      while (last > i && clean_[last - 1] == '\r') --last;
+      if (last > i && clean_[last - 1] == '\\') {
+        i = end + 1;
+        continue;
+      }
+      if (!directive && options_.tab_continues && end + 1 < clean_.size() &&
+          clean_[end + 1] == '\t' && !is_directive(end + 1)) {
+        i = end + 1;
+        continue;
+      }
+      return end;
+    }
+  }
+
+  // Copies bytes [begin, end) of the original; splices become blanks.
+  void emit_verbatim(std::size_t begin, std::size_t end) {
+    if (begin >= end) return;
+    const std::size_t at = out_.size();
+    for (std::size_t i = begin; i < end; ++i) {
+      char c = clean_[i];
+      if (i + 1 < end && c == '\\' &&
+          (clean_[i + 1] == '\n' || clean_[i + 1] == '\r')) {
+        c = ' ';
+      } else if (c == '\n' && i + 1 != end) {
+        c = ' ';
+      }
+      out_ += c;
+    }
+    if (!spans_.empty() && spans_.back().verbatim &&
+        spans_.back().original_begin + spans_.back().length == begin &&
+        spans_.back().text_begin + spans_.back().length == at) {
+      spans_.back().length += end - begin;
+    } else {
+      spans_.push_back(SourceSpan{.text_begin = at,
+                                  .original_begin = begin,
+                                  .length = end - begin,
+                                  .verbatim = true});
+    }
+  }
+
+  void emit_expansion(std::size_t at, const std::string& text) {
+    if (text.empty()) return;
+    spans_.push_back(SourceSpan{.text_begin = out_.size(),
+                                .original_begin = at,
+                                .length = text.size(),
+                                .verbatim = false});
+    out_ += text;
+  }
+
+  void line(std::size_t begin, std::size_t end) {
+    if (is_directive(begin)) {
+      directive(begin, end);
+      return;
+    }
+    if (!active()) return;
+    std::size_t copied = begin;
+    std::size_t i = begin;
+    while (i < end) {
+      const char c = clean_[i];
+      if (c == '"') {
+        i = skip_string(clean_, i, end);
+        continue;
+      }
+      if (std::isdigit(static_cast<unsigned char>(c)) != 0) {
+        i = skip_number(clean_, i, end);
+        continue;
+      }
+      if (!is_ident_start(c)) {
+        ++i;
+        continue;
+      }
+      std::size_t j = i;
+      while (j < end && is_ident_char(clean_[j])) ++j;
+      const std::string name = clean_.substr(i, j - i);
+      const auto it = macros_.find(name);
+      if (it == macros_.end()) {
+        i = j;
+        continue;
+      }
+      std::size_t after = j;
+      std::set<std::string> disabled{name};
+      std::string expansion;
+      if (it->second.parameters) {
+        std::size_t open = j;
+        while (open < end && (is_space(clean_[open]) || clean_[open] == '\n'))
+          ++open;
+        if (open >= end || clean_[open] != '(') {
+          i = j;
+          continue;
+        }
+        std::vector<std::string> arguments;
+        after = read_arguments(std::string_view(clean_).substr(0, end), open,
+                               arguments, i);
+        expansion = call(it->second, arguments, disabled, name, i);
+      } else {
+        expansion = expand(it->second.body, disabled, i);
+      }
+      emit_verbatim(copied, i);
+      emit_expansion(i, expansion);
+      copied = i = after;
+    }
+    emit_verbatim(copied, end);
+  }
+
+  static std::size_t skip_string(std::string_view text, std::size_t i,
+                                 std::size_t end) {
+    for (++i; i < end && text[i] != '"'; ++i) {
+      if (text[i] == '\\') ++i;
+    }
+    return std::min(end, i + 1);
+  }
+
+  static std::size_t skip_number(std::string_view text, std::size_t i,
+                                 std::size_t end) {
+    ++i;
+    while (i < end && (is_ident_char(text[i]) || text[i] == '.' ||
+                       ((text[i] == '+' || text[i] == '-') &&
+                        (text[i - 1] == 'e' || text[i - 1] == 'E')))) {
+      ++i;
+    }
+    return i;
+  }
+
+  // Reads `( a, b )` from `open`; returns the offset after `)`.
+  std::size_t read_arguments(std::string_view text, std::size_t open,
+                             std::vector<std::string>& arguments,
+                             std::size_t at) const {
+    int depth = 0;
+    std::size_t start = open + 1;
+    for (std::size_t k = open; k < text.size(); ++k) {
+      const char c = text[k];
+      if (c == '"') {
+        k = skip_string(text, k, text.size()) - 1;
+        continue;
+      }
+      if (c == '(') {
+        ++depth;
+      } else if (c == ')' && --depth == 0) {
+        arguments.emplace_back(trim(text.substr(start, k - start)));
+        return k + 1;
+      } else if (c == ',' && depth == 1) {
+        arguments.emplace_back(trim(text.substr(start, k - start)));
+        start = k + 1;
+      }
+    }
+    fail(at, "unclosed '(' in the call of macro '" +
+                 std::string(text.substr(at, open - at)) + "'");
+  }
+
+  std::string call(const Macro& macro, std::vector<std::string> arguments,
+                   std::set<std::string> disabled, const std::string& name,
+                   std::size_t at) {
+    const std::size_t wanted = macro.parameters->size();
+    if (wanted == 0 && arguments.size() == 1 && arguments.front().empty()) {
+      arguments.clear();
+    }
+    if (arguments.size() != wanted) {
+      std::string message = "macro '";
+      message += name;
+      message += "' takes ";
+      message += std::to_string(wanted);
+      message += wanted == 1 ? " argument" : " arguments";
+      message += ", here ";
+      message += std::to_string(arguments.size());
+      fail(at, std::move(message));
+    }
+    for (std::string& argument : arguments) {
+      argument = expand(argument, disabled, at);
+    }
+    std::string substituted;
+    const std::string& body = macro.body;
+    for (std::size_t i = 0; i < body.size();) {
+      if (!is_ident_start(body[i])) {
+        substituted += body[i++];
+        continue;
+      }
+      std::size_t j = i;
+      while (j < body.size() && is_ident_char(body[j])) ++j;
+      const std::string_view word(body.data() + i, j - i);
+      const auto p =
+          std::find(macro.parameters->begin(), macro.parameters->end(), word);
+      if (p == macro.parameters->end()) {
+        substituted += word;
+      } else {
+        substituted +=
+            arguments[static_cast<std::size_t>(p - macro.parameters->begin())];
+      }
+      i = j;
+    }
+    disabled.insert(name);
+    return expand(substituted, disabled, at);
+  }
+
+  // Expands the macros of a text that is not in the source (a body, an
+  // argument); errors are placed at `at`, the use that led here.
+  std::string expand(const std::string& text, std::set<std::string> disabled,
+                     std::size_t at) {
+    if (++depth_ > kMaxDepth) fail(at, "macros expand too deeply");
+    std::string out;
+    for (std::size_t i = 0; i < text.size();) {
+      const char c = text[i];
+      if (c == '"' || std::isdigit(static_cast<unsigned char>(c)) != 0) {
+        const std::size_t end = c == '"' ? skip_string(text, i, text.size())
+                                         : skip_number(text, i, text.size());
+        out.append(text, i, end - i);
+        i = end;
+        continue;
+      }
+      if (!is_ident_start(c)) {
+        out += c;
+        ++i;
+        continue;
+      }
+      std::size_t j = i;
+      while (j < text.size() && is_ident_char(text[j])) ++j;
+      const std::string name = text.substr(i, j - i);
+      const auto it = macros_.find(name);
+      if (it == macros_.end() || disabled.count(name) != 0) {
+        out += name;
+        i = j;
+        continue;
+      }
+      if (!it->second.parameters) {
+        std::set<std::string> inner = disabled;
+        inner.insert(name);
+        out += expand(it->second.body, inner, at);
+        i = j;
+        continue;
+      }
+      std::size_t open = j;
+      while (open < text.size() && is_space(text[open])) ++open;
+      if (open >= text.size() || text[open] != '(') {
+        out += name;
+        i = j;
+        continue;
+      }
+      std::vector<std::string> arguments;
+      const std::size_t after = read_arguments(text, open, arguments, at);
+      out += call(it->second, arguments, disabled, name, at);
+      i = after;
+    }
+    if (out.size() > kMaxExpansion) fail(at, "a macro expands to too much");
+    --depth_;
+    return out;
+  }
+
+  void directive(std::size_t begin, std::size_t end) {
+    std::size_t i = clean_.find('#', begin) + 1;
+    while (i < end && is_space(clean_[i])) ++i;
+    const std::size_t word_begin = i;
+    while (i < end && is_ident_char(clean_[i])) ++i;
+    const std::string word = clean_.substr(word_begin, i - word_begin);
+    std::string_view rest = std::string_view(clean_).substr(i, end - i);
+    if (word == "if" || word == "ifdef" || word == "ifndef") {
+      const bool outer = active();
+      bool value = false;
+      if (outer) {
+        value = word == "if" ? evaluate_condition(rest, i)
+                             : (is_defined(trim(rest)) == (word == "ifdef"));
+      }
+      conditions_.push_back(
+          Condition{outer && value, outer && value, outer, begin});
+      return;
+    }
+    if (word == "elif" || word == "else" || word == "endif") {
+      if (conditions_.empty()) {
+        fail(word_begin, "'#" + word + "' without '#if'");
+      }
+      Condition& c = conditions_.back();
+      if (word == "endif") {
+        conditions_.pop_back();
+      } else if (word == "else") {
+        c.active = c.outer && !c.taken;
+        c.taken = true;
+      } else {
+        c.active = c.outer && !c.taken && evaluate_condition(rest, i);
+        c.taken = c.taken || c.active;
+      }
+      return;
+    }
+    if (!active()) return;
+    if (word == "define") {
+      define(begin, end, i);
+      return;
+    }
+    if (word == "undef") {
+      macros_.erase(std::string(trim(rest)));
+      return;
+    }
+    if (word == "pragma" || word == "line" || word == "warning") return;
+    if (word == "error") {
+      fail(begin, "#error " + std::string(trim(rest)));
+    }
+    fail(begin,
+         "#include is not supported: copy the included file's text into "
+         "this one");
+  }
+
+  void define(std::size_t begin, std::size_t end, std::size_t i) {
+    while (i < end && is_space(clean_[i])) ++i;
+    const std::size_t name_begin = i;
+    while (i < end && is_ident_char(clean_[i])) ++i;
+    if (i == name_begin || !is_ident_start(clean_[name_begin])) {
+      fail(name_begin, "expected a name after #define");
+    }
+    const std::string name = clean_.substr(name_begin, i - name_begin);
+    Macro macro;
+    if (i < end && clean_[i] == '(') {
+      std::vector<std::string> parameters;
+      const std::size_t close = clean_.find(')', i);
+      if (close == std::string::npos || close >= end) {
+        fail(i, "unclosed '(' in #define");
+      }
+      std::string_view list =
+          std::string_view(clean_).substr(i + 1, close - i - 1);
+      while (!trim(list).empty()) {
+        const std::size_t comma = list.find(',');
+        const std::string_view p = trim(list.substr(0, comma));
+        if (p.empty() || !is_ident_start(p.front()) ||
+            !std::all_of(p.begin(), p.end(), is_ident_char)) {
+          fail(i + 1, "expected the names of the macro's parameters");
+        }
+        parameters.emplace_back(p);
+        if (comma == std::string_view::npos) break;
+        list.remove_prefix(comma + 1);
+      }
+      macro.parameters = std::move(parameters);
+      i = close + 1;
+    }
+    std::string body;
+    for (char c : trim(std::string_view(clean_).substr(i, end - i))) {
+      body += (c == '\n' || c == '\\') ? ' ' : c;
+    }
+    macro.body = std::string(trim(body));
+    if (!macro.parameters &&
+        (overridden_.count(name) != 0 || is_constant_body(macro.body))) {
+      // The grammar reads it as a constant; its line stays.
+      macros_.erase(name);
+      constants_[name] = macro.body;
+      emit_verbatim(begin, end);
+      return;
+    }
+    constants_.erase(name);
+    macros_[name] = std::move(macro);
+  }
+
+  // A number, a constant, or `( … )` over numbers, constants and
+  // arithmetic: its value as a constant equals its textual expansion.
+  bool is_constant_body(std::string_view body) const {
+    if (body.empty()) return false;
+    const auto names_are_constants = [&](std::string_view s) {
+      for (std::size_t i = 0; i < s.size();) {
+        if (std::isdigit(static_cast<unsigned char>(s[i])) != 0 ||
+            (s[i] == '.' && i + 1 < s.size() &&
+             std::isdigit(static_cast<unsigned char>(s[i + 1])) != 0)) {
+          i = skip_number(s, i, s.size());
+          continue;
+        }
+        if (is_ident_start(s[i])) {
+          std::size_t j = i;
+          while (j < s.size() && is_ident_char(s[j])) ++j;
+          if (constants_.count(std::string(s.substr(i, j - i))) == 0)
+            return false;
+          i = j;
+          continue;
+        }
+        if (std::string_view("+-*/() \t.").find(s[i]) ==
+            std::string_view::npos) {
+          return false;
+        }
+        ++i;
+      }
+      return true;
+    };
+    std::string_view rest = body;
+    if (rest.front() == '-' || rest.front() == '+') rest.remove_prefix(1);
+    rest = trim(rest);
+    if (rest.empty()) return false;
+    if (rest.front() == '(') {
+      int depth = 0;
+      for (std::size_t k = 0; k < rest.size(); ++k) {
+        if (rest[k] == '(') ++depth;
+        if (rest[k] == ')' && --depth == 0 && k + 1 != rest.size())
+          return false;
+      }
+      return depth == 0 && names_are_constants(rest);
+    }
+    const bool single =
+        std::none_of(rest.begin(), rest.end(),
+                     [](char c) {
+                       return std::string_view("+-*/() \t").find(c) !=
+                              std::string_view::npos;
+                     }) ||
+        (std::isdigit(static_cast<unsigned char>(rest.front())) != 0 &&
+         skip_number(rest, 0, rest.size()) == rest.size());
+    return single && names_are_constants(rest);
+  }
+
+  bool is_defined(std::string_view name) const {
+    const std::string n(name);
+    return macros_.count(n) != 0 || constants_.count(n) != 0;
+  }
+
+  bool evaluate_condition(std::string_view text, std::size_t at) {
+    // `defined X` and `defined(X)` first, then macros; names left are 0.
+    std::string resolved;
+    for (std::size_t i = 0; i < text.size();) {
+      if (text.substr(i).starts_with("defined") &&
+          (i + 7 == text.size() || !is_ident_char(text[i + 7]))) {
+        std::size_t j = i + 7;
+        while (j < text.size() && is_space(text[j])) ++j;
+        const bool paren = j < text.size() && text[j] == '(';
+        if (paren) ++j;
+        while (j < text.size() && is_space(text[j])) ++j;
+        const std::size_t name_begin = j;
+        while (j < text.size() && is_ident_char(text[j])) ++j;
+        resolved +=
+            is_defined(text.substr(name_begin, j - name_begin)) ? " 1 " : " 0 ";
+        if (paren) {
+          while (j < text.size() && text[j] != ')') ++j;
+          ++j;
+        }
+        i = j;
+        continue;
+      }
+      resolved += text[i++];
+    }
+    std::map<std::string, Macro> saved = macros_;
+    for (const auto& [name, body] : constants_) {
+      macros_[name] = Macro{std::nullopt, "(" + body + ")"};
+    }
+    std::string expanded = expand(resolved, {}, at);
+    macros_ = std::move(saved);
+    std::string numeric;
+    for (std::size_t i = 0; i < expanded.size();) {
+      if (is_ident_start(expanded[i])) {
+        std::size_t j = i;
+        while (j < expanded.size() && is_ident_char(expanded[j])) ++j;
+        const std::string_view word(expanded.data() + i, j - i);
+        // Function calls stay; other names are 0, as in C.
+        std::size_t k = j;
+        while (k < expanded.size() && is_space(expanded[k])) ++k;
+        numeric += (k < expanded.size() && expanded[k] == '(')
+                       ? std::string(word)
+                       : std::string("0");
+        i = j;
+        continue;
+      }
+      numeric += expanded[i++];
+    }
+    try {
+      const auto condition =
+          std::make_shared<const SourceFile>(source_.name(), numeric);
+      const Expression e =
+          parse_expression(condition, 0, numeric.size(), ExpressionScope{});
+      if (!e.is_constant()) fail(at, "cannot evaluate this #if");
+      return e.constant_value() != 0.0;
+    } catch (const ParseError& error) {
+      fail(at, "cannot evaluate this #if: " + error.diagnostic().message);
+    }
+  }
+
+  static constexpr int kMaxDepth = 200;
+  static constexpr std::size_t kMaxExpansion = std::size_t{1} << 20U;
+
+  const SourceFile& source_;
+  const PreprocessOptions& options_;
+  std::string clean_;
+  std::string out_;
+  std::vector<SourceSpan> spans_;
+  std::map<std::string, Macro> macros_;
+  std::map<std::string, std::string> constants_;
+  std::set<std::string> overridden_;
+  std::vector<Condition> conditions_;
+  int depth_ = 0;
+};
+
+}  // namespace
+
+std::shared_ptr<const SourceFile> preprocess(const SourceFile& source,
+                                             const PreprocessOptions& options) {
+  return Preprocessor(source, options).run();
+}
+
+}  // namespace lsys::dialects

@@ -1,0 +1,39 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "lsys/source.hpp"
+
+namespace lsys::dialects {
+
+/// How cpfg's preprocessing differs from plain C's.
+struct PreprocessOptions {
+  /// `NAME=VALUE` texts (`--define`): a macro of that name is kept as a
+  /// constant whatever its body, so that the grammar gives it the value.
+  std::vector<std::string> defines;
+  /// A line break followed by a tab continues the line, as cpfg's lexer
+  /// reads its files; the break becomes a blank.
+  bool tab_continues = false;
+};
+
+/// Runs the C preprocessor that cpfg runs on its `.l` and `.v` files
+/// (docs/dialects/cpfg.md): `/* */` and `//` comments, `#define` with and
+/// without parameters, `#undef`, `#if`/`#ifdef`/`#ifndef`/`#elif`/`#else`/
+/// `#endif`, `\` line splices. A macro whose body is a number, a
+/// parenthesised expression of numbers and such macros, or one such macro
+/// is a constant: its `#define` line stays and its uses are not expanded,
+/// so that the grammar reads it as a constant (`--define`, the viewer's
+/// controls) with the same value as textual expansion gives. Other
+/// directive lines become empty; every line stays on its line, and
+/// diagnostics point to the original text (SourceFile's spans).
+/// @throws ParseError at `#include` (not supported), an unknown directive,
+///   `#error`, an unbalanced `#if`, a malformed `#define`, or a macro
+///   called with the wrong number of arguments.
+[[nodiscard]] std::shared_ptr<const SourceFile> preprocess(
+    const SourceFile& source, const PreprocessOptions& options);
+
+}  // namespace lsys::dialects

@@ -1,0 +1,229 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// cpfg, the L-system program of vlab (Prusinkiewicz, Hanan, Měch and
+// others): a `.l` file run through the C preprocessor, and beside it a view
+// file `.v` that holds the angle, the widths and the tropism. The symbol
+// meanings are cpfg's (CPFG Reference Manual §6, and cpfg's interpret.c
+// where they differ), which are not ABOP's in three places: `$` ends a
+// sub-L-system, `'` means nothing, `_` changes the elasticity. What cpfg
+// can draw and lsolid cannot is refused by name (docs/dialects/cpfg.md).
+#include <algorithm>
+#include <filesystem>
+#include <system_error>
+
+#include "dialects/c_preprocessor.hpp"
+#include "dialects/cpfg_view.hpp"
+#include "dialects/front_ends.hpp"
+#include "lsys/diagnostic.hpp"
+
+namespace lsys::dialects {
+namespace {
+
+// cpfg draws lines `w` pixels wide by default; on paper a pixel is taken
+// as a tenth of a step, the width lsolid gives a file that sets none, so a
+// one-pixel line prints as lsolid's line drawings do.
+constexpr double kStepsPerPixel = 0.1;
+
+const std::vector<SymbolCommand> kSymbols = {
+    {"F", TurtleCommand::Draw, std::nullopt, 1},
+    {"f", TurtleCommand::Move, std::nullopt, 1},
+    {"G", TurtleCommand::DrawNoVertex, std::nullopt, 1},
+    {"g", TurtleCommand::MoveNoVertex, std::nullopt, 1},
+    {"+", TurtleCommand::TurnLeft, std::nullopt, 1},
+    {"-", TurtleCommand::TurnRight, std::nullopt, 1},
+    {"&", TurtleCommand::PitchDown, std::nullopt, 1},
+    {"^", TurtleCommand::PitchUp, std::nullopt, 1},
+    {"/", TurtleCommand::RollRight, std::nullopt, 1},
+    {"\\", TurtleCommand::RollLeft, std::nullopt, 1},
+    {"|", TurtleCommand::TurnAround, std::nullopt, 0},
+    {"@v", TurtleCommand::RollToVertical, std::nullopt, 0},
+    {"[", TurtleCommand::Push, std::nullopt, 0},
+    {"]", TurtleCommand::Pop, std::nullopt, 0},
+    {"{", TurtleCommand::PolygonBegin, std::nullopt, 0},
+    {".", TurtleCommand::PolygonVertex, std::nullopt, 0},
+    {"}", TurtleCommand::PolygonEnd, std::nullopt, 0},
+    {"!", TurtleCommand::Width, std::nullopt, 1},
+    {"#", TurtleCommand::Widen, std::nullopt, 1},
+    {";", TurtleCommand::ColorNext, std::nullopt, 1},
+    {",", TurtleCommand::ColorPrevious, std::nullopt, 1},
+    {"%", TurtleCommand::Cut, std::nullopt, 0},
+    {"_", TurtleCommand::ElasticityChange, std::nullopt, 1},
+    // The end of a sub-L-system (whose call `?` is refused); no drawing.
+    {"$", TurtleCommand::None, std::nullopt, std::nullopt},
+    // Cylinder sides and contours, back-side colours, twist and texture:
+    // about rendering, nothing to print.
+    {"@!", TurtleCommand::None, std::nullopt, std::nullopt},
+    {"@#", TurtleCommand::None, std::nullopt, std::nullopt},
+    {"@;", TurtleCommand::None, std::nullopt, std::nullopt},
+    {"@,", TurtleCommand::None, std::nullopt, std::nullopt},
+    {"@Tf", TurtleCommand::None, std::nullopt, std::nullopt},
+    {"@Tp", TurtleCommand::None, std::nullopt, std::nullopt},
+    {"@Tx", TurtleCommand::None, std::nullopt, std::nullopt},
+};
+
+const std::vector<RefusedName> kRefused = {
+    {"@O", "a sphere"},
+    {"@o", "a disc"},
+    {"@c", "a disc"},
+    {"@bo", "a circle"},
+    {"@bc", "a circle"},
+    {"@M", "a move to a point"},
+    {"@R", "setting the heading"},
+    {"@L", "a label"},
+    {"@S", "a system call"},
+    {"@D", "the turtle's scale"},
+    {"@Di", "the turtle's scale"},
+    {"@Dd", "the turtle's scale"},
+    {"@Gs", "a generalized cylinder"},
+    {"@Gc", "a generalized cylinder"},
+    {"@Ge", "a generalized cylinder"},
+    {"@Gt", "a generalized cylinder"},
+    {"@Gr", "a generalized cylinder"},
+    {"@PS", "a bicubic patch"},
+    {"@PC", "a bicubic patch"},
+    {"@PD", "a bicubic patch"},
+    {"@Ts", "the newer tropism model"},
+    {"@Ti", "the newer tropism model"},
+    {"@Td", "the newer tropism model"},
+    {"~", "a predefined surface"},
+    {"?", "a sub-L-system call or a query"},
+};
+
+// The view file cpfg would be given: the one named, else the `.v` of the
+// same name, else the only `.v` in the folder.
+std::optional<std::filesystem::path> find_view(const SourceFile& source,
+                                               const ParseOptions& options) {
+  if (!options.view_file.empty()) return options.view_file;
+  std::error_code ec;
+  const std::filesystem::path l(source.name());
+  if (!std::filesystem::is_regular_file(l, ec)) return std::nullopt;
+  std::filesystem::path same = l;
+  same.replace_extension(".v");
+  if (std::filesystem::is_regular_file(same, ec)) return same;
+  std::optional<std::filesystem::path> only;
+  const std::filesystem::path folder =
+      l.has_parent_path() ? l.parent_path() : std::filesystem::path(".");
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+    if (entry.path().extension() != ".v" || !entry.is_regular_file(ec))
+      continue;
+    if (only) return std::nullopt;
+    only = entry.path();
+  }
+  return only;
+}
+
+Draft notation(const CpfgView& view) {
+  Draft draft;
+  draft.symbols = kSymbols;
+  draft.refused = kRefused;
+  draft.syntax.fixed_arity = false;
+  draft.syntax.extra_turtle_parameters = true;
+  Settings& s = draft.defaults;
+  s.roll = RollConvention::Cpfg;
+  s.angle_deg = view.angle_deg.value_or(45.0);
+  const CpfgLineStyle style = view.line_style.value_or(CpfgLineStyle::Pixel);
+  s.width_scale = style == CpfgLineStyle::Pixel ? kStepsPerPixel : 1.0;
+  s.initial_width = view.line_width.value_or(1.0);  // scaled as all widths
+  s.width_increment = view.width_increment.value_or(0.0);
+  s.initial_color = std::clamp(view.initial_color.value_or(0), 0, 255);
+  if (view.tropism_direction) {
+    // cpfg's Y is up; lsolid's Z.
+    const glm::dvec3& t = *view.tropism_direction;
+    s.tropism = glm::dvec3(t.x, -t.z, t.y);
+  }
+  s.elasticity = view.elasticity.value_or(0.0);
+  s.elasticity_increment = view.elasticity_increment.value_or(0.0);
+  draft.warnings = view.warnings;
+  if (view.color_increment && *view.color_increment != 1.0) {
+    draft.warnings.emplace_back(
+        "the view file's color increment is taken as 1 (colours are "
+        "indices here)");
+  }
+  return draft;
+}
+
+// `{(1)` to `{(4)` start generalized cylinders in cpfg, not polygons.
+void refuse_cylinder_braces(const Grammar& grammar) {
+  const auto check = [&](const Successor& successor) {
+    for (std::size_t i = 0; i < successor.size(); ++i) {
+      if (grammar.commands[successor.symbols()[i]] ==
+              TurtleCommand::PolygonBegin &&
+          !successor.parameters(i).empty()) {
+        throw error_at(*grammar.source, successor.offset(i),
+                       "cpfg's '{(n)' (a generalized cylinder) is not "
+                       "supported; write '{' for a polygon");
+      }
+    }
+  };
+  check(grammar.axiom);
+  for (const auto* list : {&grammar.productions, &grammar.decompositions,
+                           &grammar.homomorphisms}) {
+    for (const Production& p : *list) check(p.successor);
+  }
+}
+
+// cpfg makes an L-system stochastic only with `seed:`; without it the
+// probabilities are ignored, with a warning (lsys_input.y).
+bool has_seed_line(std::string_view text) {
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t i = start;
+    while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
+    if (text.size() - i >= 4 &&
+        (text.substr(i, 4) == "seed" || text.substr(i, 4) == "Seed")) {
+      i += 4;
+      while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
+      if (i < text.size() && text[i] == ':') return true;
+    }
+    const std::size_t end = text.find('\n', start);
+    if (end == std::string_view::npos) break;
+    start = end + 1;
+  }
+  return false;
+}
+
+void drop_probabilities_without_seed(Grammar& grammar) {
+  if (has_seed_line(grammar.source->text())) return;
+  bool dropped = false;
+  for (Production& p : grammar.productions) {
+    dropped = dropped || p.probability.has_value();
+    p.probability.reset();
+  }
+  if (dropped) {
+    grammar.warnings.emplace_back(
+        "probabilities without 'seed:' are ignored, as cpfg ignores them: "
+        "the first applicable production is taken");
+  }
+}
+
+}  // namespace
+
+Grammar read_cpfg(std::shared_ptr<const SourceFile> source,
+                  const ParseOptions& options) {
+  CpfgView view;
+  std::optional<std::filesystem::path> view_path = find_view(*source, options);
+  if (view_path) {
+    const auto view_source = load_source(*view_path);
+    check_text(*view_source);
+    view = read_cpfg_view(*view_source);
+  }
+  auto preprocessed = preprocess(
+      *source,
+      PreprocessOptions{.defines = options.defines, .tab_continues = true});
+  Draft draft = notation(view);
+  if (!view_path) {
+    draft.warnings.insert(
+        draft.warnings.begin(),
+        "no view file (.v) found for " + source->name() +
+            ": cpfg's defaults are used (45 degrees, lines 1 pixel wide); "
+            "name one with --view");
+  }
+  Grammar grammar = read_ls_lines(std::move(preprocessed), options,
+                                  std::move(draft), LsVariant::Cpfg);
+  refuse_cylinder_braces(grammar);
+  drop_probabilities_without_seed(grammar);
+  return grammar;
+}
+
+}  // namespace lsys::dialects

@@ -1,0 +1,235 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// cpfg's view file, read as cpfg's ReadViewData reads it (interpret.c):
+// each line a label ending at its first `:`, then values. The commands and
+// their defaults are those of the CPFG Reference Manual §8.1; where the
+// manual and cpfg's code differ (a width without a unit word), the code's
+// behaviour is taken, as docs/dialects/cpfg.md says.
+#include "dialects/cpfg_view.hpp"
+
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <string_view>
+
+#include "dialects/c_preprocessor.hpp"
+#include "lsys/diagnostic.hpp"
+
+namespace lsys::dialects {
+namespace {
+
+// Commands about the camera, lights, rendering and animation: accepted
+// and left out, as a solid has none of them.
+constexpr std::array<std::string_view, 39> kViewOnly{{
+    "viewpoint",
+    "view reference point",
+    "twist",
+    "projection",
+    "viewing angle",
+    "front distance",
+    "back distance",
+    "scale factor",
+    "box",
+    "min zoom",
+    "max zoom",
+    "generate on view change",
+    "z buffer",
+    "render mode",
+    "shadow map",
+    "antialiasing",
+    "concave polygons",
+    "tapered lines",
+    "contour sides",
+    "polygonization level",
+    "twist of cylinders",
+    "light direction",
+    "diffuse reflection",
+    "surface ambient",
+    "surface diffuse",
+    "light",
+    "line",
+    "tsurface",
+    "contour",
+    "texture",
+    "background scene",
+    "font",
+    "winfont",
+    "shade mode",
+    "cue range",
+    "background color",
+    "ambient light",
+    "interpretation step",
+    "initial scale",
+}};
+
+class ViewReader {
+ public:
+  explicit ViewReader(const SourceFile& source)
+      : source_(source), text_(source.text()) {}
+
+  CpfgView run() {
+    std::size_t start = 0;
+    while (start < text_.size()) {
+      std::size_t end = text_.find('\n', start);
+      if (end == std::string_view::npos) end = text_.size();
+      command(start, end);
+      start = end + 1;
+    }
+    return std::move(view_);
+  }
+
+ private:
+  [[noreturn]] void fail(std::size_t offset, std::string message) const {
+    throw error_at(source_, offset, std::move(message));
+  }
+
+  void skip_blanks(std::size_t& i, std::size_t end) const {
+    while (i < end && (text_[i] == ' ' || text_[i] == '\t' || text_[i] == '\r'))
+      ++i;
+  }
+
+  // The next number at or after i, skipping blanks and commas (cpfg's
+  // `%f,%f,%f` and `%f %f %f` both occur).
+  double number(std::size_t& i, std::size_t end) const {
+    while (i < end && (text_[i] == ' ' || text_[i] == '\t' || text_[i] == ',' ||
+                       text_[i] == '\r')) {
+      ++i;
+    }
+    const std::size_t at = i;
+    double value = 0.0;
+    const char* first = text_.data() + i;
+    if (i < end && text_[i] == '+') ++first;
+    const auto [ptr, ec] = std::from_chars(first, text_.data() + end, value);
+    if (ec != std::errc() || ptr == first) fail(at, "expected a number");
+    i = static_cast<std::size_t>(ptr - text_.data());
+    return value;
+  }
+
+  std::string_view word(std::size_t& i, std::size_t end) const {
+    skip_blanks(i, end);
+    const std::size_t at = i;
+    while (i < end && std::isalpha(static_cast<unsigned char>(text_[i])) != 0)
+      ++i;
+    return text_.substr(at, i - at);
+  }
+
+  static std::optional<CpfgLineStyle> style_named(std::string_view w) {
+    if (w.empty()) return std::nullopt;
+    switch (std::tolower(static_cast<unsigned char>(w.front()))) {
+      case 'p':
+        return w.size() > 2 && (w[2] == 'l' || w[2] == 'L')
+                   ? CpfgLineStyle::Polygon
+                   : CpfgLineStyle::Pixel;
+      case 'c':
+        return CpfgLineStyle::Cylinder;
+      default:
+        return std::nullopt;
+    }
+  }
+
+  void command(std::size_t begin, std::size_t end) {
+    std::size_t i = begin;
+    skip_blanks(i, end);
+    if (i == end) return;
+    const std::size_t colon = text_.find(':', i);
+    if (colon == std::string_view::npos || colon >= end) {
+      fail(i, "expected a command ending in ':'");
+    }
+    std::size_t label_end = colon;
+    while (label_end > i &&
+           (text_[label_end - 1] == ' ' || text_[label_end - 1] == '\t')) {
+      --label_end;
+    }
+    const std::string_view label = text_.substr(i, label_end - i);
+    std::size_t v = colon + 1;
+    if (label == "angle factor") {
+      const double n = number(v, end);
+      if (n == 0.0) fail(colon + 1, "the angle factor cannot be 0");
+      view_.angle_deg = 360.0 / n;
+    } else if (label == "angle increment") {
+      view_.angle_deg = number(v, end);
+    } else if (label == "initial line width") {
+      view_.line_width = number(v, end);
+      // cpfg's code: a unit word starting with p means pixels, with s
+      // cylinders; no word means flat polygons in model units.
+      const std::string_view unit = word(v, end);
+      if (unit.empty()) {
+        view_.line_style = CpfgLineStyle::Polygon;
+      } else if (std::tolower(static_cast<unsigned char>(unit.front())) ==
+                 's') {
+        view_.line_style = CpfgLineStyle::Cylinder;
+      } else if (std::tolower(static_cast<unsigned char>(unit.front())) ==
+                 'p') {
+        view_.line_style = CpfgLineStyle::Pixel;
+      }
+    } else if (label == "line style") {
+      skip_blanks(v, end);
+      if (v < end && text_[v] >= '1' && text_[v] <= '3') {
+        view_.line_style = static_cast<CpfgLineStyle>(text_[v] - '1');
+      } else if (const auto style = style_named(word(v, end))) {
+        view_.line_style = *style;
+      } else {
+        // cpfg keeps its style for a word it does not know.
+        warn(i, "line style other than pixel, polygon or cylinder");
+      }
+    } else if (label == "line width increment") {
+      view_.width_increment = number(v, end);
+    } else if (label == "initial color") {
+      view_.initial_color = static_cast<int>(number(v, end));
+    } else if (label == "color increment") {
+      view_.color_increment = number(v, end);
+    } else if (label == "tropism direction") {
+      const double x = number(v, end);
+      const double y = number(v, end);
+      const double z = number(v, end);
+      view_.tropism_direction = glm::dvec3(x, y, z);
+    } else if (label == "initial elasticity") {
+      view_.elasticity = number(v, end);
+    } else if (label == "elasticity increment") {
+      view_.elasticity_increment = number(v, end);
+    } else if (label == "surface") {
+      skip_blanks(v, end);
+      if (v < end) view_.surfaces += text_[v];
+    } else if (label == "tropism" || label == "torque") {
+      ++view_.tropisms;
+    } else if (label == "function" || label == "function set" ||
+               label == "curve" || label == "scale multiplier" ||
+               label == "interpretation past %") {
+      // Read where they matter: func() and @Di/@Dd are refused where the
+      // L-system uses them.
+    } else {
+      for (std::string_view known : kViewOnly) {
+        if (label == known) return;
+      }
+      std::string what = "unknown view command '";
+      what += label;
+      what += "'";
+      warn(i, what);
+    }
+  }
+
+  void warn(std::size_t at, std::string_view what) {
+    const SourceLocation where = source_.location(at);
+    std::string warning = source_.name();
+    warning += ':';
+    warning += std::to_string(where.line);
+    warning += ": ";
+    warning += what;
+    warning += " left out, as cpfg does";
+    view_.warnings.push_back(std::move(warning));
+  }
+
+  const SourceFile& source_;
+  std::string_view text_;
+  CpfgView view_;
+};
+
+}  // namespace
+
+CpfgView read_cpfg_view(const SourceFile& view) {
+  const auto preprocessed = preprocess(view, PreprocessOptions{});
+  return ViewReader(*preprocessed).run();
+}
+
+}  // namespace lsys::dialects

@@ -1,0 +1,42 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <glm/vec3.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lsys/source.hpp"
+
+namespace lsys::dialects {
+
+/// How cpfg draws `F`: lines so many pixels wide, flat ribbons, or
+/// cylinders; the last two in model units.
+enum class CpfgLineStyle { Pixel, Polygon, Cylinder };
+
+/// What lsolid takes from a cpfg view file (`.v`); the rest of it is about
+/// the camera, lights and rendering, and has no bearing on a solid.
+struct CpfgView {
+  std::optional<double> angle_deg;   ///< `angle increment`, `angle factor`
+  std::optional<double> line_width;  ///< `initial line width`
+  std::optional<CpfgLineStyle> line_style;
+  std::optional<double> width_increment;  ///< `line width increment`
+  std::optional<int> initial_color;
+  std::optional<double> color_increment;
+  std::optional<glm::dvec3> tropism_direction;  ///< in cpfg's frame, Y up
+  std::optional<double> elasticity;             ///< `initial elasticity`
+  std::optional<double> elasticity_increment;
+  std::string surfaces;  ///< the one-letter ids of `surface:` lines
+  int tropisms = 0;      ///< `tropism:` and `torque:` lines
+  std::vector<std::string> warnings;  ///< commands cpfg does not know
+};
+
+/// Reads a view file, preprocessed as cpfg does (comments, `#define`).
+/// A command is a label up to the first `:` and values after it; later
+/// commands override earlier ones (docs/dialects/cpfg.md).
+/// @throws ParseError at a value that is not the number(s) its command
+///   takes.
+[[nodiscard]] CpfgView read_cpfg_view(const SourceFile& view);
+
+}  // namespace lsys::dialects

@@ -1,0 +1,267 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// The cpfg front end (docs/dialects/cpfg.md): the C preprocessor, the view
+// file beside the `.l`, cpfg's symbols and what it refuses.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <glm/geometric.hpp>
+
+#include "lsys/interpretation.hpp"
+#include "support/core_helpers.hpp"
+
+namespace lsys {
+namespace {
+
+using testing::located_error_of;
+
+constexpr std::string_view kHead = "Lsystem: 1\nderivation length: 1\n";
+
+Grammar cpfg(std::string_view text, ParseOptions options = {}) {
+  options.dialect = Dialect::Cpfg;
+  return parse_grammar_text(text, options, "plant.l");
+}
+
+std::string derived_cpfg(std::string_view text) {
+  const Grammar g = cpfg(text);
+  return to_string(derive(g), g.alphabet);
+}
+
+std::string cpfg_error(std::string_view text) {
+  return located_error_of([&] { (void)cpfg(text); });
+}
+
+// A folder of its own for files that the front end finds beside each other.
+class CpfgFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ =
+        std::filesystem::temp_directory_path() /
+        ("lsolid_cpfg_" +
+         std::string(
+             ::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  std::filesystem::path write(const std::string& name,
+                              std::string_view text) const {
+    const auto path = dir_ / name;
+    std::ofstream(path) << text;
+    return path;
+  }
+
+  Grammar read(const std::string& name, ParseOptions options = {}) const {
+    return parse_grammar(load_source(dir_ / name), options);
+  }
+
+  std::filesystem::path dir_;
+};
+
+TEST(Cpfg, IsDetectedByItsLsystemLineUnlessTheFileIsNamedLs) {
+  const std::string text =
+      "#define N 3\nLsystem: 1\nderivation length: N\nAxiom: F\nendlsystem\n";
+  EXPECT_EQ(detect_dialect(text, "plant.l"), Dialect::Cpfg);
+  EXPECT_EQ(detect_dialect("lsystem:2\naxiom: F\n", "leaf.l"), Dialect::Cpfg);
+  EXPECT_EQ(detect_dialect(text, "plant.ls"), Dialect::Ls);
+  EXPECT_EQ(detect_dialect("axiom: F\nF -> FF\n", "plant.l"), Dialect::Ls);
+  EXPECT_EQ(dialect_named("cpfg"), Dialect::Cpfg);
+}
+
+TEST_F(CpfgFiles, TakesTheAngleAndThePixelWidthsFromTheViewFileOfTheSameName) {
+  write("plant.l", std::string(kHead) + "Axiom: F+F\nendlsystem\n");
+  write("plant.v",
+        "/* a view */\nangle factor: 4\ninitial line width: 3 pixels\n"
+        "line width increment: 0.5\nviewpoint: 0,0,1\n");
+  write("other.v", "angle increment: 30\n");
+  const Grammar g = read("plant.l");
+  EXPECT_DOUBLE_EQ(g.settings.angle_deg, 90.0);
+  EXPECT_DOUBLE_EQ(g.settings.initial_width, 3.0);
+  EXPECT_DOUBLE_EQ(g.settings.width_scale, 0.1);  // a pixel is 0.1 step
+  EXPECT_DOUBLE_EQ(*g.settings.width_increment, 0.5);
+  EXPECT_EQ(g.settings.roll, RollConvention::Cpfg);
+  const Skeleton s = interpret(g);
+  ASSERT_EQ(s.segments.size(), 2U);
+  EXPECT_NEAR(glm::dot(s.segments[0].p1 - s.segments[0].p0,
+                       s.segments[1].p1 - s.segments[1].p0),
+              0.0, 1e-12);
+}
+
+TEST_F(CpfgFiles, ReadsAWidthWithoutAUnitInModelUnitsAsCpfgDoes) {
+  write("tree.l", std::string(kHead) + "Axiom: F\nendlsystem\n");
+  write("view.v",
+        "initial line width: 3\ntropism direction: 0,-1,0\n"
+        "initial elasticity: 0.2\nelasticity increment: 0.05\n");
+  const Grammar g = read("tree.l");  // the folder's only .v
+  EXPECT_DOUBLE_EQ(g.settings.initial_width, 3.0);
+  EXPECT_DOUBLE_EQ(g.settings.width_scale, 1.0);
+  // cpfg's Y is up, lsolid's Z: gravity (0,-1,0) is (0,0,-1).
+  EXPECT_EQ(g.settings.tropism, glm::dvec3(0.0, 0.0, -1.0));
+  EXPECT_DOUBLE_EQ(g.settings.elasticity, 0.2);
+  EXPECT_DOUBLE_EQ(g.settings.elasticity_increment, 0.05);
+}
+
+TEST_F(CpfgFiles, ReadsTheViewFileItIsGivenAndWarnsWithoutOne) {
+  write("a.l", std::string(kHead) + "Axiom: F\nendlsystem\n");
+  write("a.v", "angle increment: 10\n");
+  write("b.v", "angle increment: 20\n");
+  EXPECT_DOUBLE_EQ(read("a.l").settings.angle_deg, 10.0);
+  EXPECT_DOUBLE_EQ(
+      read("a.l", {.view_file = (dir_ / "b.v").string()}).settings.angle_deg,
+      20.0);
+  std::filesystem::remove(dir_ / "a.v");
+  EXPECT_DOUBLE_EQ(read("a.l").settings.angle_deg, 20.0);  // the only one
+  write("c.v", "angle increment: 30\n");
+  const Grammar g = read("a.l");  // two others: neither is the one
+  EXPECT_DOUBLE_EQ(g.settings.angle_deg, 45.0);
+  ASSERT_FALSE(g.warnings.empty());
+  EXPECT_NE(g.warnings.front().find("no view file (.v) found"),
+            std::string::npos);
+}
+
+TEST_F(CpfgFiles, PlacesAnErrorInTheViewFileAtItsValue) {
+  write("p.l", std::string(kHead) + "Axiom: F\nendlsystem\n");
+  write("p.v", "angle increment: 30\nangle factor: many\n");
+  const std::string error = located_error_of([&] { (void)read("p.l"); });
+  EXPECT_EQ(error, "2:15: expected a number");
+}
+
+TEST(Cpfg, ExpandsMacrosWithParametersAndModuleStringsAsTheCPreprocessor) {
+  const Grammar g = cpfg(
+      "#define STEPS 2 /* kept as a constant */\n"
+      "#define BRANCH(a) [+(a*2)F]\n"
+      "#define TWIG BRANCH(10)F\n"
+      "Lsystem: 1\n"
+      "derivation length: STEPS\n"
+      "Axiom: A\n"
+      "A --> TWIG A // a comment\n"
+      "endlsystem\n");
+  EXPECT_EQ(g.settings.derivation_length, 2);
+  EXPECT_EQ(g.constants.at("STEPS"), 2.0);
+  EXPECT_EQ(to_string(derive(g), g.alphabet), "[+(20)F]F[+(20)F]FA");
+}
+
+TEST(Cpfg, KeepsTheTextualMeaningOfAMacroThatIsNotAConstant) {
+  // cpp gives 2*1+1 = 3, not 2*(1+1) = 4.
+  EXPECT_EQ(derived_cpfg("#define SUM 1+1\nLsystem: 1\nAxiom: A(2*SUM)\n"
+                         "endlsystem\n"),
+            "A(3)");
+}
+
+TEST(Cpfg, ChoosesTheBranchOfAnIfdef) {
+  const std::string text =
+      "#define LONG\n"
+      "Lsystem: 1\nderivation length: 1\nAxiom: A\n"
+      "#ifdef LONG\nA --> FF\n#else\nA --> F\n#endif\nendlsystem\n";
+  EXPECT_EQ(derived_cpfg(text), "FF");
+  EXPECT_EQ(derived_cpfg(text.substr(text.find('\n') + 1)), "F");
+}
+
+TEST(Cpfg, PlacesErrorsAfterAnExpandedMacroWhereTheyStandInTheFile) {
+  EXPECT_EQ(cpfg_error("#define LONGNAME F\nLsystem: 1\n"
+                       "Axiom: LONGNAME F(\nendlsystem\n"),
+            "3:18: unclosed '('");
+  EXPECT_EQ(cpfg_error("#define M(a,b) F(a)\nLsystem: 1\nAxiom: M(1)\n"),
+            "3:8: macro 'M' takes 2 arguments, here 1");
+  EXPECT_EQ(cpfg_error("Lsystem: 1\n#if 1\nAxiom: F\n"),
+            "2:1: '#if' without '#endif'");
+  EXPECT_EQ(cpfg_error("#include \"leaf.l\"\nLsystem: 1\nAxiom: F\n"),
+            "1:1: #include is not supported: copy the included file's text "
+            "into this one");
+}
+
+TEST(Cpfg, ContinuesAStatementOnALineThatStartsWithATab) {
+  EXPECT_EQ(derived_cpfg(std::string(kHead) +
+                         "Axiom: A(2)\nA(t) : t>0\n\t--> F(t)A(t-1)\n"
+                         "endlsystem\n"),
+            "F(2)A(1)");
+}
+
+TEST(Cpfg, TakesProbabilitiesOnlyWithASeedAsCpfgDoes) {
+  const std::string rules =
+      "derivation length: 1\nAxiom: A\nA --> B : 1\nA --> C : 99\n"
+      "endlsystem\n";
+  const Grammar plain = cpfg("Lsystem: 1\n" + rules);
+  EXPECT_EQ(to_string(derive(plain), plain.alphabet), "B");
+  const auto warns_of_seed = [](const Grammar& g) {
+    return std::count_if(
+        g.warnings.begin(), g.warnings.end(), [](const std::string& w) {
+          return w.find("without 'seed:'") != std::string::npos;
+        });
+  };
+  EXPECT_EQ(warns_of_seed(plain), 1);
+  const Grammar seeded = cpfg("Lsystem: 1\nseed: 7\n" + rules);
+  EXPECT_TRUE(seeded.productions.front().probability.has_value());
+  EXPECT_EQ(warns_of_seed(seeded), 0);
+}
+
+TEST(Cpfg, IgnoresTheParametersTheTurtleDoesNotRead) {
+  const Grammar g =
+      cpfg("Lsystem: 1\nAxiom: F(2,5,1)+(90,0)F(1)\nendlsystem\n");
+  const Skeleton s = interpret(g);
+  ASSERT_EQ(s.segments.size(), 2U);
+  EXPECT_NEAR(glm::length(s.segments[0].p1 - s.segments[0].p0), 2.0, 1e-12);
+  EXPECT_DOUBLE_EQ(s.segments[0].start_diameter,
+                   g.settings.initial_width * g.settings.width_scale);
+  EXPECT_NEAR(glm::dot(s.segments[0].p1 - s.segments[0].p0,
+                       s.segments[1].p1 - s.segments[1].p0),
+              0.0, 1e-12);
+}
+
+TEST_F(CpfgFiles, BendsTowardTheTropismOnceTheUnderscoreGivesElasticity) {
+  write("bend.l", "Lsystem: 1\nAxiom: FF_FFF\nendlsystem\n");
+  write("bend.v", "tropism direction: 1,0,0\nelasticity increment: 0.3\n");
+  const Skeleton bent = interpret(read("bend.l"));
+  ASSERT_EQ(bent.segments.size(), 5U);
+  EXPECT_DOUBLE_EQ(bent.segments[1].p1.x, 0.0);  // before `_`: straight
+  EXPECT_GT(bent.segments[4].p1.x, 0.1);
+  write("bend.l", "Lsystem: 1\nAxiom: FF_(0)FFF\nendlsystem\n");
+  EXPECT_DOUBLE_EQ(interpret(read("bend.l")).segments[4].p1.x, 0.0);
+}
+
+TEST(Cpfg, DrawsNothingForTheEndOfASubLsystemOrAnApostrophe) {
+  const Skeleton s =
+      interpret(cpfg("Lsystem: 1\nAxiom: F$F'F@!(3)@Tx(1)\nendlsystem\n"));
+  ASSERT_EQ(s.segments.size(), 3U);
+  EXPECT_NEAR(s.segments[2].p1.z, 3.0, 1e-12);
+}
+
+TEST(Cpfg, RefusesWhatLsolidCannotDrawByNameAtItsPlace) {
+  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: F~l(2)\n"),
+            "2:9: '~' (a predefined surface) is not supported by lsolid");
+  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: F\nF --> F@O(2)\n"),
+            "3:8: '@O' (a sphere) is not supported by lsolid");
+  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: @Gs F @Ge(3)\n"),
+            "2:8: '@Gs' (a generalized cylinder) is not supported by lsolid");
+  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: A\nA > ?P(x,y) --> B\n"),
+            "3:5: '?' (a sub-L-system call or a query) is not supported by "
+            "lsolid");
+  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: {(1)F}(1)\n"),
+            "2:8: cpfg's '{(n)' (a generalized cylinder) is not supported; "
+            "write '{' for a polygon");
+}
+
+TEST(Cpfg, RefusesStatementsAndRingLsystemsAtTheirPlace) {
+  EXPECT_EQ(cpfg_error("Lsystem: 1\nStart: {x = 1;}\nAxiom: F\n"),
+            "2:1: cpfg's statements (a Start: block, global variables) are "
+            "not supported");
+  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: A(1)\nA(t) : {t=t+1;} 1 --> B\n"),
+            "3:8: cpfg's statement blocks '{ ... }' in a production are not "
+            "supported");
+  EXPECT_EQ(cpfg_error("Lsystem: 1\nring lsystem\nAxiom: F\n"),
+            "2:1: a ring L-system (contexts that wrap around the string) is "
+            "not supported");
+}
+
+TEST(Cpfg, RefusesAViewFileForAnotherNotation) {
+  EXPECT_THROW(
+      (void)parse_grammar_text("axiom: F\n", {.view_file = "plant.v"}, "a.ls"),
+      ParseError);
+}
+
+}  // namespace
+}  // namespace lsys

@@ -589,7 +589,8 @@ class LsReader : TextScan {
       return;
     }
     if (word == "include") {
-      if (view(rest).find("lpfgall.h") != std::string_view::npos) {
+      // lpfg's files include its header, often after C's own.
+      if (text_.find("lpfgall.h") != std::string_view::npos) {
         fail(line.begin,
              "this is an lpfg file: its rules are C++, and lsolid does not "
              "read lpfg");

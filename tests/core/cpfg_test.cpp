@@ -123,11 +123,13 @@ TEST_F(CpfgFiles, ReadsTheViewFileItIsGivenAndWarnsWithoutOne) {
             std::string::npos);
 }
 
-TEST_F(CpfgFiles, PlacesAnErrorInTheViewFileAtItsValue) {
+TEST_F(CpfgFiles, ExpandsMacrosInTheViewFileAndPlacesItsErrorsAtTheValue) {
   write("p.l", std::string(kHead) + "Axiom: F\nendlsystem\n");
-  write("p.v", "angle increment: 30\nangle factor: many\n");
+  write("p.v", "#define SIDES 6\nangle factor: SIDES\nangle factor: many\n");
   const std::string error = located_error_of([&] { (void)read("p.l"); });
-  EXPECT_EQ(error, "2:15: expected a number");
+  EXPECT_EQ(error, "3:15: expected a number");
+  write("p.v", "#define SIDES 6\nangle factor: SIDES // sixths\n");
+  EXPECT_DOUBLE_EQ(read("p.l").settings.angle_deg, 60.0);
 }
 
 TEST(Cpfg, ExpandsMacrosWithParametersAndModuleStringsAsTheCPreprocessor) {

@@ -477,7 +477,7 @@ class Preprocessor {
       body += (c == '\n' || c == '\\') ? ' ' : c;
     }
     macro.body = std::string(trim(body));
-    if (!macro.parameters &&
+    if (!macro.parameters && options_.keep_constants &&
         (overridden_.count(name) != 0 || is_constant_body(macro.body))) {
       // The grammar reads it as a constant; its line stays.
       macros_.erase(name);

@@ -18,6 +18,9 @@ struct PreprocessOptions {
   /// A line break followed by a tab continues the line, as cpfg's lexer
   /// reads its files; the break becomes a blank.
   bool tab_continues = false;
+  /// Numeric macros stay `#define` constants (the `.l`); without it every
+  /// macro expands as text (the `.v`, which knows no constants).
+  bool keep_constants = true;
 };
 
 /// Runs the C preprocessor that cpfg runs on its `.l` and `.v` files

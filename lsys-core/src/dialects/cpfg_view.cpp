@@ -228,7 +228,8 @@ class ViewReader {
 }  // namespace
 
 CpfgView read_cpfg_view(const SourceFile& view) {
-  const auto preprocessed = preprocess(view, PreprocessOptions{});
+  const auto preprocessed =
+      preprocess(view, PreprocessOptions{.keep_constants = false});
   return ViewReader(*preprocessed).run();
 }
 

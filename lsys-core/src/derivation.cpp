@@ -46,7 +46,11 @@ class Derivation::Impl {
         stochastic_symbol_[p.predecessor.symbol] = true;
       }
     }
-    is_streaming_ = !is_context_sensitive_ && !has_cut(grammar);
+    // cpfg's variables and random numbers make each value depend on what
+    // was rewritten before it: the string is rewritten in cpfg's order.
+    is_streaming_ =
+        !is_context_sensitive_ && !has_cut(grammar) && !grammar.uses_variables;
+    variables_.globals.assign(grammar.globals.size(), 0.0);
     check_prediction();
     if (is_streaming_) {
       expanded_.assign(static_cast<std::size_t>(n_) + 1, 0);
@@ -68,6 +72,7 @@ class Derivation::Impl {
   }
 
   int derivation_length() const noexcept { return n_; }
+  Variables* variables() noexcept { return &variables_; }
   bool is_streaming() const noexcept { return is_streaming_; }
   const std::optional<SizePrediction>& prediction() const noexcept {
     return prediction_;
@@ -121,6 +126,7 @@ class Derivation::Impl {
   // limit; where the size is exact and within the limits, nothing needs
   // counting while deriving.
   void check_prediction() {
+    if (grammar_.uses_variables) return;  // sizes depend on the variables
     prediction_ = exact_size(grammar_, n_);
     const std::optional<SizePrediction> bound =
         prediction_ ? prediction_ : size_lower_bound(grammar_, n_);
@@ -185,8 +191,9 @@ class Derivation::Impl {
     double total = 0.0;
     for (const Production* rule : rules) {
       if (!applicable(*rule)) continue;
-      const double w =
-          rule->probability ? rule->probability->evaluate(slots_) : 1.0;
+      const double w = rule->probability
+                           ? rule->probability->evaluate(slots_, &variables_)
+                           : 1.0;
       if (w < 0.0) {
         throw error_at(*grammar_.source, rule->probability->offset(),
                        "a probability cannot be negative");
@@ -389,7 +396,14 @@ class Derivation::Impl {
     if (!rule.right_context.empty() && !match_right(s, i, rule.right_context)) {
       return false;
     }
-    return condition_holds(rule, slots_);
+    // cpfg: statements before the condition run on every match, those
+    // after it only when it holds (CPFG Reference Manual §3.2).
+    slots_.resize(slots_.size() + static_cast<std::size_t>(rule.local_count),
+                  0.0);
+    if (rule.before) rule.before->execute(slots_, &variables_);
+    if (!condition_holds(rule, slots_, &variables_)) return false;
+    if (rule.after) rule.after->execute(slots_, &variables_);
+    return true;
   }
 
   void compute_matches(const ModuleString& s) {
@@ -410,10 +424,11 @@ class Derivation::Impl {
                          int depth) {
     if (depth < grammar_.settings.maximum_depth &&
         decompositions_.has_rules(symbol)) {
-      if (const Production* d =
-              decompositions_.first_applicable(symbol, params)) {
+      std::vector<double> slots;
+      if (const Production* d = decompositions_.first_applicable(
+              symbol, params, &variables_, &slots)) {
         std::vector<double> values;
-        d->successor.instantiate(params, values);
+        d->successor.instantiate(slots, values, &variables_);
         const auto& begins = d->successor.parameter_begins();
         for (std::size_t k = 0; k < d->successor.size(); ++k) {
           append_decomposed(out, d->successor.symbols()[k],
@@ -431,7 +446,7 @@ class Derivation::Impl {
   void append_successor(ModuleString& out, const Successor& successor,
                         std::span<const double> slots, std::uint32_t step) {
     std::vector<double> values;
-    successor.instantiate(slots, values);
+    successor.instantiate(slots, values, &variables_);
     const auto& begins = successor.parameter_begins();
     for (std::size_t k = 0; k < successor.size(); ++k) {
       append_decomposed(out, successor.symbols()[k],
@@ -481,11 +496,17 @@ class Derivation::Impl {
     }
   }
 
+  void run(const std::optional<Expression>& block) {
+    if (block) block->execute({}, &variables_);
+  }
+
   void materialise_steps(ModuleString& next) {
+    run(grammar_.start);
     append_successor(string_, grammar_.axiom, {}, 0);
     cut(string_);
     for (step_ = 0; step_ < n_; ++step_) {
       const int step = step_;
+      run(grammar_.start_each);
       if (is_context_sensitive_) {
         if (string_.memory_bytes() + next.memory_bytes() +
                 string_.size() * sizeof(std::size_t) >
@@ -524,7 +545,9 @@ class Derivation::Impl {
       }
       cut(next);
       std::swap(string_, next);
+      run(grammar_.end_each);
     }
+    run(grammar_.end);
     if (is_counting_) {
       for (std::size_t i = 0; i < string_.size(); ++i) count(string_.symbol(i));
     }
@@ -558,6 +581,7 @@ class Derivation::Impl {
   std::vector<std::size_t> matched_;
 
   std::vector<double> slots_;
+  Variables variables_;
   std::vector<std::pair<const Production*, double>> candidates_;
   std::uint64_t modules_ = 0;
   double segments_ = 0.0;
@@ -578,6 +602,8 @@ int Derivation::derivation_length() const noexcept {
 }
 
 bool Derivation::is_streaming() const noexcept { return impl_->is_streaming(); }
+
+Variables* Derivation::variables() noexcept { return impl_->variables(); }
 
 const std::optional<SizePrediction>& Derivation::prediction() const noexcept {
   return impl_->prediction();

@@ -33,9 +33,10 @@ struct Function {
   std::string_view name;
   Op op;
   int arity;
+  bool cpfg_only = false;
 };
 
-constexpr std::array<Function, 15> kFunctions{{
+constexpr std::array<Function, 23> kFunctions{{
     {"sin", Op::Sin, 1},
     {"cos", Op::Cos, 1},
     {"tan", Op::Tan, 1},
@@ -51,15 +52,27 @@ constexpr std::array<Function, 15> kFunctions{{
     {"ceil", Op::Ceil, 1},
     {"min", Op::Min, 2},
     {"max", Op::Max, 2},
+    // cpfg's (CPFG Reference Manual §5.1; its utility.c for the random
+    // ones): trunc rounds there, as cpfg's code computes it.
+    {"fabs", Op::Abs, 1, true},
+    {"trunc", Op::Trunc, 1, true},
+    {"sign", Op::Sign, 1, true},
+    {"ran", Op::Ran, 1, true},
+    {"nran", Op::Nran, 2, true},
+    {"bran", Op::Bran, 2, true},
+    {"biran", Op::Biran, 2, true},
+    {"srand", Op::Srand, 1, true},
 }};
 
 int arity(Op op) {
   switch (op) {
     case Op::Constant:
     case Op::Parameter:
+    case Op::Global:
       return 0;
     case Op::Negate:
     case Op::Not:
+    case Op::Func:
       return 1;
     default:
       break;
@@ -68,6 +81,42 @@ int arity(Op op) {
     if (f.op == op) return f.arity;
   }
   return 2;
+}
+
+// Draws from cpfg's generator or changes it: never folded.
+bool is_random(Op op) {
+  return op == Op::Ran || op == Op::Nran || op == Op::Bran || op == Op::Biran ||
+         op == Op::Srand;
+}
+
+// erand48: X ← (0x5DEECE66D·X + 0xB) mod 2^48, the value X / 2^48.
+double erand48(std::uint64_t& state) {
+  constexpr std::uint64_t kMask = (std::uint64_t{1} << 48U) - 1;
+  state = (0x5DEECE66DULL * state + 0xBULL) & kMask;
+  return static_cast<double>(state) * 0x1.0p-48;
+}
+
+// The polar method (Marsaglia), as cpfg's nran draws a normal deviate.
+double normal(std::uint64_t& state, double mean, double deviation) {
+  for (;;) {
+    const double u = 2.0 * erand48(state) - 1.0;
+    const double v = 2.0 * erand48(state) - 1.0;
+    const double s = u * u + v * v;
+    if (s > 0.0 && s < 1.0) {
+      return mean + deviation * u * std::sqrt(-2.0 * std::log(s) / s);
+    }
+  }
+}
+
+// Jöhnk's method for Beta(a, b): exact for any positive a, b.
+double beta(std::uint64_t& state, double a, double b) {
+  if (a <= 0.0 || b <= 0.0) return 0.0;
+  for (int tries = 0; tries < 1000000; ++tries) {
+    const double x = std::pow(erand48(state), 1.0 / a);
+    const double y = std::pow(erand48(state), 1.0 / b);
+    if (x + y <= 1.0 && x + y > 0.0) return x / (x + y);
+  }
+  return a / (a + b);
 }
 
 // Applies one operation; `divide_by_zero` is set instead of dividing by 0.
@@ -137,8 +186,20 @@ double apply(Op op, double a, double b, bool& divide_by_zero) {
       return std::fmin(a, b);
     case Op::Max:
       return std::fmax(a, b);
-    case Op::Constant:
-    case Op::Parameter:
+    case Op::Modulo: {
+      // cpfg: the remainder of the operands cut to integers.
+      const double d = std::trunc(b);
+      if (d == 0.0) {
+        divide_by_zero = true;
+        return 0.0;
+      }
+      return std::fmod(std::trunc(a), d);
+    }
+    case Op::Trunc:
+      return std::floor(a + 0.5);
+    case Op::Sign:
+      return a > 0.0 ? 1.0 : (a < 0.0 ? -1.0 : 0.0);
+    default:
       break;
   }
   return 0.0;
@@ -148,6 +209,7 @@ struct Node {
   Instruction instruction;
   int a = -1;
   int b = -1;
+  int c = -1;  // Select's third operand
 };
 
 // Recursive descent over bytes [begin, end) of the source, building a tree
@@ -164,7 +226,7 @@ class Compiler {
   std::vector<Instruction> compile(int& stack_depth) {
     skip_space();
     if (pos_ >= text_.size()) fail(pos_, "expected an expression");
-    const int root = parse_or();
+    const int root = parse_conditional();
     skip_space();
     if (pos_ < text_.size()) {
       fail(pos_,
@@ -213,6 +275,7 @@ class Compiler {
   // Folds a node whose operands are constants into a constant.
   int fold(int index) {
     Node& node = nodes_[static_cast<std::size_t>(index)];
+    if (is_random(node.instruction.op)) return index;
     const auto is_const = [&](int i) {
       return i < 0 ||
              nodes_[static_cast<std::size_t>(i)].instruction.op == Op::Constant;
@@ -235,6 +298,24 @@ class Compiler {
 
   int binary(Op op, std::size_t offset, int a, int b) {
     return fold(add(op, offset, a, b));
+  }
+
+  // cpfg's `c ? a : b`, right-associative, below `||`.
+  int parse_conditional() {
+    const int condition = parse_or();
+    if (!scope_.cpfg) return condition;
+    skip_space();
+    const std::size_t at = pos_;
+    if (!accept("?")) return condition;
+    const int yes = parse_conditional();
+    if (!accept(":")) fail(pos_, "expected ':' after '?' and a value");
+    const int no = parse_conditional();
+    const Instruction test =
+        nodes_[static_cast<std::size_t>(condition)].instruction;
+    if (test.op == Op::Constant) return test.value != 0.0 ? yes : no;
+    const int node = add(Op::Select, at, condition, yes);
+    nodes_.back().c = no;
+    return node;
   }
 
   int parse_or() {
@@ -309,6 +390,8 @@ class Compiler {
         left = binary(Op::Multiply, at, left, parse_unary());
       } else if (accept("/")) {
         left = binary(Op::Divide, at, left, parse_unary());
+      } else if (scope_.cpfg && accept("%")) {
+        left = binary(Op::Modulo, at, left, parse_unary());
       } else {
         return left;
       }
@@ -365,7 +448,7 @@ class Compiler {
     if (pos_ >= text_.size()) fail(pos_, "expected an expression");
     const auto c = static_cast<unsigned char>(text_[pos_]);
     if (accept("(")) {
-      const int inner = parse_or();
+      const int inner = parse_conditional();
       if (!accept(")")) fail(pos_, "expected ')'");
       return inner;
     }
@@ -437,6 +520,16 @@ class Compiler {
         return node;
       }
     }
+    if (const auto slot = local_slot(name)) {
+      const int node = add(Op::Parameter, at);
+      nodes_.back().instruction.slot = *slot;
+      return node;
+    }
+    if (const auto slot = global_slot(name)) {
+      const int node = add(Op::Global, at);
+      nodes_.back().instruction.slot = *slot;
+      return node;
+    }
     if (scope_.constants != nullptr) {
       if (const auto it = scope_.constants->find(name);
           it != scope_.constants->end()) {
@@ -450,18 +543,46 @@ class Compiler {
     fail(at, "undefined name '" + name + "'");
   }
 
+  // cpfg's func(id, x): id names a function of the view file, from 1.
+  int parse_func(std::size_t at) {
+    accept("(");
+    const int id = parse_conditional();
+    if (!accept(",")) fail(pos_, "expected ',' after the function's number");
+    const int x = parse_conditional();
+    if (!accept(")")) fail(pos_, "expected ')'");
+    const Instruction number = nodes_[static_cast<std::size_t>(id)].instruction;
+    if (number.op != Op::Constant) {
+      fail(number.offset, "func's first argument must be a constant");
+    }
+    const std::size_t count =
+        scope_.functions == nullptr ? 0 : scope_.functions->size();
+    const double k = number.value;
+    if (k < 1.0 || k > static_cast<double>(count) || k != std::floor(k)) {
+      fail(number.offset, "func(" + std::to_string(static_cast<long>(k)) +
+                              ", ...): the view file names " +
+                              std::to_string(count) +
+                              (count == 1 ? " function" : " functions"));
+    }
+    const int node = add(Op::Func, at, x);
+    nodes_.back().instruction.slot = static_cast<std::uint32_t>(k) - 1;
+    return node;
+  }
+
   int parse_call(const std::string& name, std::size_t at) {
+    if (scope_.cpfg && name == "func") return parse_func(at);
     const Function* function = nullptr;
     for (const Function& f : kFunctions) {
       if (f.name == name) function = &f;
     }
-    if (function == nullptr) fail(at, "'" + name + "' is not a function");
+    if (function == nullptr || (function->cpfg_only && !scope_.cpfg)) {
+      fail(at, "'" + name + "' is not a function");
+    }
     accept("(");
     std::vector<int> args;
     skip_space();
     if (!accept(")")) {
       for (;;) {
-        args.push_back(parse_or());
+        args.push_back(parse_conditional());
         if (accept(")")) break;
         if (!accept(",")) fail(pos_, "expected ',' or ')'");
       }
@@ -500,11 +621,256 @@ class Compiler {
   // Appends the postfix code of a subtree; returns its stack depth.
   int emit(int index, std::vector<Instruction>& code) const {
     const Node& node = nodes_[static_cast<std::size_t>(index)];
+    if (node.instruction.op == Op::Select) {
+      int depth = emit(node.a, code);
+      const std::size_t to_else = code.size();
+      code.push_back(Instruction{.op = Op::JumpIfZero});
+      depth = std::max(depth, emit(node.b, code));
+      const std::size_t to_end = code.size();
+      code.push_back(Instruction{.op = Op::Jump});
+      code[to_else].slot = static_cast<std::uint32_t>(code.size());
+      depth = std::max(depth, emit(node.c, code));
+      code[to_end].slot = static_cast<std::uint32_t>(code.size());
+      return depth;
+    }
     int depth = 1;
     if (node.a >= 0) depth = emit(node.a, code);
     if (node.b >= 0) depth = std::max(depth, 1 + emit(node.b, code));
     code.push_back(node.instruction);
     return depth;
+  }
+
+  std::optional<std::uint32_t> local_slot(const std::string& name) const {
+    if (scope_.locals == nullptr) return std::nullopt;
+    const auto& locals = *scope_.locals;
+    for (std::size_t i = 0; i < locals.size(); ++i) {
+      if (locals[i] == name) {
+        return static_cast<std::uint32_t>(scope_.parameters.size() + i);
+      }
+    }
+    return std::nullopt;
+  }
+
+  std::optional<std::uint32_t> global_slot(const std::string& name) const {
+    if (scope_.globals == nullptr) return std::nullopt;
+    const auto& globals = *scope_.globals;
+    for (std::size_t i = 0; i < globals.size(); ++i) {
+      if (globals[i] == name) return static_cast<std::uint32_t>(i);
+    }
+    return std::nullopt;
+  }
+
+ public:
+  // cpfg's statements (CPFG Reference Manual §3.2): straight into code,
+  // each expression through the tree and its folding.
+  std::vector<Instruction> compile_statements(int& stack_depth) {
+    std::vector<Instruction> code;
+    skip_space();
+    if (accept("{")) {
+      statement_list(code, true);
+      skip_space();
+      if (pos_ < text_.size()) {
+        fail(pos_, "unexpected '" + std::string(peek_code_point()) +
+                       "' after the statements");
+      }
+    } else {
+      statement_list(code, false);
+    }
+    stack_depth = std::max(1, depth_);
+    if (stack_depth > kMaxStack) fail(pos_, "statements are nested too deeply");
+    return code;
+  }
+
+ private:
+  void statement_list(std::vector<Instruction>& code, bool until_brace) {
+    const Nesting guard(*this);
+    for (;;) {
+      skip_space();
+      if (pos_ >= text_.size()) {
+        if (until_brace) fail(pos_, "expected '}'");
+        return;
+      }
+      if (until_brace && accept("}")) return;
+      statement(code);
+    }
+  }
+
+  void body(std::vector<Instruction>& code) {
+    skip_space();
+    if (accept("{")) {
+      statement_list(code, true);
+    } else {
+      statement(code);
+    }
+  }
+
+  std::string_view peek_word() const {
+    std::size_t end = pos_;
+    while (end < text_.size() &&
+           (std::isalnum(static_cast<unsigned char>(text_[end])) != 0 ||
+            text_[end] == '_')) {
+      ++end;
+    }
+    return text_.substr(pos_, end - pos_);
+  }
+
+  void expression_into(std::vector<Instruction>& code) {
+    nodes_.clear();
+    const int root = parse_conditional();
+    depth_ = std::max(depth_, emit(root, code));
+  }
+
+  void parenthesised_into(std::vector<Instruction>& code) {
+    if (!accept("(")) fail(pos_, "expected '('");
+    expression_into(code);
+    if (!accept(")")) fail(pos_, "expected ')'");
+  }
+
+  void expect_semicolon() {
+    if (!accept(";")) fail(pos_, "expected ';' after the statement");
+  }
+
+  std::size_t jump(std::vector<Instruction>& code, Op op) {
+    code.push_back(Instruction{.op = op, .offset = pos_});
+    return code.size() - 1;
+  }
+
+  static void land(std::vector<Instruction>& code, std::size_t from) {
+    code[from].slot = static_cast<std::uint32_t>(code.size());
+  }
+
+  void statement(std::vector<Instruction>& code) {
+    const Nesting guard(*this);
+    skip_space();
+    const std::size_t at = pos_;
+    if (accept(";")) return;
+    const std::string word(peek_word());
+    if (word == "if") {
+      pos_ += word.size();
+      skip_space();
+      parenthesised_into(code);
+      const std::size_t to_else = jump(code, Op::JumpIfZero);
+      body(code);
+      skip_space();
+      if (peek_word() == "else") {
+        pos_ += 4;
+        const std::size_t to_end = jump(code, Op::Jump);
+        land(code, to_else);
+        body(code);
+        land(code, to_end);
+      } else {
+        land(code, to_else);
+      }
+      return;
+    }
+    if (word == "while") {
+      pos_ += word.size();
+      skip_space();
+      const std::size_t start = code.size();
+      parenthesised_into(code);
+      const std::size_t to_end = jump(code, Op::JumpIfZero);
+      body(code);
+      code.push_back(Instruction{.op = Op::Jump,
+                                 .slot = static_cast<std::uint32_t>(start),
+                                 .offset = at});
+      land(code, to_end);
+      return;
+    }
+    if (word == "do") {
+      pos_ += word.size();
+      const std::size_t start = code.size();
+      body(code);
+      skip_space();
+      if (peek_word() != "while") fail(pos_, "expected 'while' after 'do'");
+      pos_ += 5;
+      skip_space();
+      parenthesised_into(code);
+      code.push_back(Instruction{.op = Op::Not, .offset = at});
+      code.push_back(Instruction{.op = Op::JumpIfZero,
+                                 .slot = static_cast<std::uint32_t>(start),
+                                 .offset = at});
+      expect_semicolon();
+      return;
+    }
+    if (word == "printf" || word == "fprintf" || word == "fflush") {
+      skip_call();
+      expect_semicolon();
+      return;
+    }
+    if (!word.empty() &&
+        std::isdigit(static_cast<unsigned char>(word.front())) == 0) {
+      std::size_t after = pos_ + word.size();
+      while (after < text_.size() &&
+             (text_[after] == ' ' || text_[after] == '\t'))
+        ++after;
+      if (after < text_.size() && text_[after] == '=' &&
+          (after + 1 >= text_.size() || text_[after + 1] != '=')) {
+        pos_ = after + 1;
+        const Instruction store = store_for(word, at);
+        expression_into(code);
+        code.push_back(store);
+        expect_semicolon();
+        return;
+      }
+    }
+    expression_into(code);
+    code.push_back(Instruction{.op = Op::Pop, .offset = at});
+    expect_semicolon();
+  }
+
+  // `printf("%f\n", x)`: up to its closing parenthesis, strings included.
+  void skip_call() {
+    pos_ += peek_word().size();
+    skip_space();
+    if (!accept("(")) fail(pos_, "expected '('");
+    int depth = 1;
+    while (pos_ < text_.size() && depth > 0) {
+      const char c = text_[pos_++];
+      if (c == '"') {
+        while (pos_ < text_.size() && text_[pos_] != '"') {
+          if (text_[pos_] == '\\') ++pos_;
+          ++pos_;
+        }
+        ++pos_;
+      } else if (c == '(') {
+        ++depth;
+      } else if (c == ')') {
+        --depth;
+      }
+    }
+    if (depth > 0) fail(pos_, "expected ')'");
+  }
+
+  Instruction store_for(const std::string& name, std::size_t at) {
+    for (std::size_t i = 0; i < scope_.parameters.size(); ++i) {
+      if (scope_.parameters[i] == name) {
+        return Instruction{.op = Op::StoreSlot,
+                           .slot = static_cast<std::uint32_t>(i),
+                           .offset = at};
+      }
+    }
+    if (const auto slot = local_slot(name)) {
+      return Instruction{.op = Op::StoreSlot, .slot = *slot, .offset = at};
+    }
+    if (const auto slot = global_slot(name)) {
+      return Instruction{.op = Op::StoreGlobal, .slot = *slot, .offset = at};
+    }
+    if (scope_.assign_globals && scope_.globals != nullptr) {
+      scope_.globals->push_back(name);
+      return Instruction{
+          .op = Op::StoreGlobal,
+          .slot = static_cast<std::uint32_t>(scope_.globals->size() - 1),
+          .offset = at};
+    }
+    if (scope_.locals != nullptr) {
+      scope_.locals->push_back(name);
+      return Instruction{
+          .op = Op::StoreSlot,
+          .slot = static_cast<std::uint32_t>(scope_.parameters.size() +
+                                             scope_.locals->size() - 1),
+          .offset = at};
+    }
+    fail(at, "cannot assign to '" + name + "' here");
   }
 
   const SourceFile& source_;
@@ -513,6 +879,7 @@ class Compiler {
   const ExpressionScope& scope_;
   std::vector<Node> nodes_;
   int nesting_ = 0;
+  int depth_ = 0;
 };
 
 }  // namespace
@@ -523,25 +890,132 @@ Expression Expression::constant(double value) {
   return e;
 }
 
-double Expression::evaluate(std::span<const double> parameters) const {
+double Expression::evaluate(std::span<const double> parameters,
+                            Variables* variables) const {
   if (code_.size() == 1) {
     const Instruction& only = code_.front();
-    return only.op == Op::Constant ? only.value : parameters[only.slot];
+    if (only.op == Op::Constant) return only.value;
+    if (only.op == Op::Parameter) return parameters[only.slot];
   }
+  const double value = run(parameters.data(), nullptr, variables);
+  if (!std::isfinite(value)) {
+    throw error_at(*source_, offset_,
+                   "the value of this expression is not a finite number");
+  }
+  return value;
+}
+
+void Expression::execute(std::span<double> slots, Variables* variables) const {
+  (void)run(slots.data(), slots.data(), variables);
+}
+
+double Expression::run(const double* read, double* write,
+                       Variables* variables) const {
+  // A loop of a model that never ends must not hang the program.
+  constexpr std::size_t kMaxJumpsBack = 1'000'000;
   std::array<double, kMaxStack> stack{};
   int top = -1;
-  for (const Instruction& in : code_) {
+  std::size_t jumps_back = 0;
+  constexpr double kMostDraws = 1e7;
+  double draws = 0.0;
+  const auto need_variables = [&](const Instruction& in) -> Variables& {
+    if (variables == nullptr) {
+      throw error_at(*source_, in.offset,
+                     "cpfg's variables and random numbers are not available "
+                     "here");
+    }
+    return *variables;
+  };
+  const auto at = [&](int i) -> double& {
+    return stack[static_cast<std::size_t>(i)];
+  };
+  std::size_t pc = 0;
+  while (pc < code_.size()) {
+    const Instruction& in = code_[pc++];
     switch (in.op) {
       case Op::Constant:
-        stack[static_cast<std::size_t>(++top)] = in.value;
+        at(++top) = in.value;
         break;
       case Op::Parameter:
-        stack[static_cast<std::size_t>(++top)] = parameters[in.slot];
+        at(++top) = read[in.slot];
         break;
+      case Op::Global:
+        at(++top) = need_variables(in).globals[in.slot];
+        break;
+      case Op::StoreSlot:
+        write[in.slot] = at(top--);
+        break;
+      case Op::StoreGlobal:
+        need_variables(in).globals[in.slot] = at(top--);
+        break;
+      case Op::Pop:
+        --top;
+        break;
+      case Op::JumpIfZero:
+        if (at(top--) != 0.0) break;
+        [[fallthrough]];
+      case Op::Jump:
+        if (in.slot < pc && ++jumps_back > kMaxJumpsBack) {
+          throw error_at(*source_, in.offset,
+                         "a loop ran a million times; lsolid stops it");
+        }
+        pc = in.slot;
+        break;
+      case Op::Ran:
+        at(top) *= erand48(need_variables(in).random_state);
+        break;
+      case Op::Func: {
+        // cpfg clamps x to [0, 1]; between samples, a straight line.
+        const std::vector<double>& y = (*functions_)[in.slot];
+        const double x =
+            std::clamp(at(top), 0.0, 1.0) * static_cast<double>(y.size() - 1);
+        const auto i = std::min(static_cast<std::size_t>(x), y.size() - 2);
+        const double f = x - static_cast<double>(i);
+        at(top) = y[i] + f * (y[i + 1] - y[i]);
+        break;
+      }
+      case Op::Nran: {
+        const double deviation = at(top--);
+        at(top) = normal(need_variables(in).random_state, at(top), deviation);
+        break;
+      }
+      case Op::Bran: {
+        const double b = at(top--);
+        at(top) = beta(need_variables(in).random_state, at(top), b);
+        break;
+      }
+      case Op::Biran: {
+        // cpfg draws n uniforms; so does lsolid, within a budget of draws
+        // per block so that a loop of them cannot run for hours.
+        const double p = at(top--);
+        const double n = std::max(0.0, std::trunc(at(top)));
+        draws += n;
+        if (draws > kMostDraws) {
+          throw error_at(*source_, in.offset,
+                         "biran draws more than 10 million numbers here; "
+                         "lsolid stops it");
+        }
+        double count = 0.0;
+        std::uint64_t& state = need_variables(in).random_state;
+        for (double i = 0.0; i < n; i += 1.0) {
+          if (erand48(state) <= p) count += 1.0;
+        }
+        at(top) = count;
+        break;
+      }
+      case Op::Srand: {
+        // cpfg's srand(s): erand48's state {0x330E, s & 0xFFFF, s >> 16}.
+        const auto seed = static_cast<std::uint64_t>(
+            static_cast<std::uint32_t>(static_cast<std::int64_t>(at(top))));
+        need_variables(in).random_state =
+            ((seed >> 16U) << 32U) | ((seed & 0xFFFFU) << 16U) | 0x330EU;
+        at(top) = 0.0;
+        break;
+      }
       default: {
         const int n = arity(in.op);
-        const double b = n == 2 ? stack[static_cast<std::size_t>(top--)] : 0.0;
-        double& a = stack[static_cast<std::size_t>(top)];
+        const double b = n == 2 ? at(top--) : 0.0;
+        double& a = at(top);
         bool divide_by_zero = false;
         a = apply(in.op, a, b, divide_by_zero);
         if (divide_by_zero) {
@@ -550,12 +1024,29 @@ double Expression::evaluate(std::span<const double> parameters) const {
       }
     }
   }
-  const double value = stack[0];
-  if (!std::isfinite(value)) {
-    throw error_at(*source_, offset_,
-                   "the value of this expression is not a finite number");
-  }
-  return value;
+  return top >= 0 ? stack[0] : 0.0;
+}
+
+namespace {
+
+bool calls_functions(const std::vector<Expression::Instruction>& code) {
+  return std::any_of(code.begin(), code.end(),
+                     [](const auto& in) { return in.op == Op::Func; });
+}
+
+bool touches_variables(const std::vector<Expression::Instruction>& code) {
+  return std::any_of(code.begin(), code.end(), [](const auto& in) {
+    return in.op == Op::Global || in.op == Op::StoreGlobal || is_random(in.op);
+  });
+}
+
+}  // namespace
+
+void Expression::adopt(std::vector<Instruction> code,
+                       const ExpressionScope& scope) {
+  code_ = std::move(code);
+  uses_variables_ = touches_variables(code_);
+  if (calls_functions(code_)) functions_ = scope.functions;
 }
 
 Expression parse_expression(std::shared_ptr<const SourceFile> source,
@@ -563,7 +1054,7 @@ Expression parse_expression(std::shared_ptr<const SourceFile> source,
                             const ExpressionScope& scope) {
   Compiler compiler(*source, begin, end, scope);
   Expression e;
-  e.code_ = compiler.compile(e.stack_depth_);
+  e.adopt(compiler.compile(e.stack_depth_), scope);
   std::size_t offset = begin;
   const std::string& text = source->text();
   while (offset < end && (text[offset] == ' ' || text[offset] == '\t')) {
@@ -574,6 +1065,17 @@ Expression parse_expression(std::shared_ptr<const SourceFile> source,
     throw error_at(*source, offset,
                    "the value of this expression is not a finite number");
   }
+  e.source_ = std::move(source);
+  return e;
+}
+
+Expression parse_statements(std::shared_ptr<const SourceFile> source,
+                            std::size_t begin, std::size_t end,
+                            const ExpressionScope& scope) {
+  Compiler compiler(*source, begin, end, scope);
+  Expression e;
+  e.adopt(compiler.compile_statements(e.stack_depth_), scope);
+  e.offset_ = begin;
   e.source_ = std::move(source);
   return e;
 }

@@ -9,6 +9,7 @@ void Successor::push_back(SymbolId symbol, std::vector<Expression> parameters,
   symbols_.push_back(symbol);
   offsets_.push_back(static_cast<std::uint32_t>(offset));
   for (Expression& e : parameters) {
+    uses_variables_ = uses_variables_ || e.uses_variables();
     if (is_constant_ && e.is_constant()) {
       constant_values_.push_back(e.constant_value());
     } else if (is_constant_) {
@@ -36,10 +37,11 @@ void Successor::shrink_to_fit() {
 }
 
 void Successor::instantiate(std::span<const double> slots,
-                            std::vector<double>& out) const {
+                            std::vector<double>& out,
+                            Variables* variables) const {
   out.resize(expressions_.size());
   for (std::size_t i = 0; i < expressions_.size(); ++i) {
-    out[i] = expressions_[i].evaluate(slots);
+    out[i] = expressions_[i].evaluate(slots, variables);
   }
 }
 

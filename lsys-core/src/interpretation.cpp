@@ -113,9 +113,13 @@ class Interpreter {
     state_.tropism = settings_.tropism;
     state_.elasticity = settings_.elasticity;
     buffers_.resize(static_cast<std::size_t>(settings_.maximum_depth) + 1);
+    slot_buffers_.resize(buffers_.size());
   }
 
   void reserve(std::size_t segments) { skeleton_.segments.reserve(segments); }
+
+  /// cpfg's variables, which the homomorphism may read and draw from.
+  void use_variables(Variables* variables) { variables_ = variables; }
 
   // A homomorphism can multiply the modules the turtle reads without
   // drawing anything; `on_limit` throws when more than `most` are read.
@@ -141,10 +145,12 @@ class Interpreter {
   void interpret(SymbolId symbol, std::span<const double> params,
                  std::uint32_t generation, int depth) {
     if (depth < settings_.maximum_depth && homomorphisms_.has_rules(symbol)) {
-      if (const Production* rule =
-              homomorphisms_.first_applicable(symbol, params)) {
+      if (const Production* rule = homomorphisms_.first_applicable(
+              symbol, params, variables_,
+              &slot_buffers_[static_cast<std::size_t>(depth)])) {
         std::vector<double>& values = buffers_[static_cast<std::size_t>(depth)];
-        rule->successor.instantiate(params, values);
+        rule->successor.instantiate(
+            slot_buffers_[static_cast<std::size_t>(depth)], values, variables_);
         const auto& begins = rule->successor.parameter_begins();
         const auto& symbols = rule->successor.symbols();
         for (std::size_t k = 0; k < symbols.size(); ++k) {
@@ -495,6 +501,7 @@ class Interpreter {
 
   const Grammar& grammar_;
   const Settings& settings_;
+  std::vector<std::vector<double>> slot_buffers_;
   RuleIndex homomorphisms_;
   double roll_sign_;
   TurtleState state_;
@@ -504,6 +511,7 @@ class Interpreter {
   Skeleton skeleton_;
   std::uint64_t modules_read_ = 0;
   std::uint64_t random_turns_ = 0;
+  Variables* variables_ = nullptr;
   std::uint64_t max_modules_ = std::numeric_limits<std::uint64_t>::max();
   std::function<void()> on_limit_;
 };
@@ -514,6 +522,7 @@ Skeleton interpret(const Grammar& grammar, const DerivationOptions& derivation,
                    const InterpretOptions& options) {
   Derivation d(grammar, derivation);
   Interpreter interpreter(grammar, options);
+  interpreter.use_variables(d.variables());
   const int n = d.derivation_length();
   const std::string limit =
       " modules after the homomorphism, more than the limit of " +
@@ -582,6 +591,8 @@ ParseError nothing_drawn_error(const Grammar& grammar,
 Skeleton interpret_string(const Grammar& grammar, const ModuleString& modules,
                           const InterpretOptions& options) {
   Interpreter interpreter(grammar, options);
+  Variables variables{.globals = std::vector<double>(grammar.globals.size())};
+  interpreter.use_variables(&variables);
   interpreter.run(modules);
   return interpreter.finish();
 }

@@ -31,10 +31,15 @@ class RuleIndex {
     return only_[symbol];
   }
   /// The first context-free rule whose arity matches and whose condition
-  /// holds for these parameters, else null.
-  /// @throws ParseError when a condition fails to evaluate.
+  /// holds for these parameters, else null. `slots` receives the values
+  /// its successor reads: the parameters as cpfg's statements left them,
+  /// and the rule's local variables.
+  /// @pre `slots` is given when a rule has statements.
+  /// @throws ParseError when a condition or a statement fails.
   [[nodiscard]] const Production* first_applicable(
-      SymbolId symbol, std::span<const double> parameters) const;
+      SymbolId symbol, std::span<const double> parameters,
+      Variables* variables = nullptr,
+      std::vector<double>* slots = nullptr) const;
 
  private:
   std::vector<std::vector<const Production*>> by_symbol_;
@@ -44,8 +49,9 @@ class RuleIndex {
 /// True if a rule's condition holds (or it has none).
 /// @throws ParseError when the condition fails to evaluate.
 [[nodiscard]] inline bool condition_holds(const Production& rule,
-                                          std::span<const double> slots) {
-  return !rule.condition || rule.condition->evaluate(slots) != 0.0;
+                                          std::span<const double> slots,
+                                          Variables* variables = nullptr) {
+  return !rule.condition || rule.condition->evaluate(slots, variables) != 0.0;
 }
 
 }  // namespace lsys

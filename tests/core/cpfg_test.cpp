@@ -247,16 +247,115 @@ TEST(Cpfg, RefusesWhatLsolidCannotDrawByNameAtItsPlace) {
             "write '{' for a polygon");
 }
 
-TEST(Cpfg, RefusesStatementsAndRingLsystemsAtTheirPlace) {
-  EXPECT_EQ(cpfg_error("Lsystem: 1\nStart: {x = 1;}\nAxiom: F\n"),
-            "2:1: cpfg's statements (a Start: block, global variables) are "
-            "not supported");
-  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: A(1)\nA(t) : {t=t+1;} 1 --> B\n"),
-            "3:8: cpfg's statement blocks '{ ... }' in a production are not "
-            "supported");
+TEST(Cpfg, RefusesArraysAndRingLsystemsAtTheirPlace) {
+  EXPECT_EQ(cpfg_error("Lsystem: 1\ndefine: { array a[2] = {1, 2}; }\n"
+                       "Axiom: F\n"),
+            "2:1: cpfg's arrays (a define: block) are not supported");
   EXPECT_EQ(cpfg_error("Lsystem: 1\nring lsystem\nAxiom: F\n"),
             "2:1: a ring L-system (contexts that wrap around the string) is "
             "not supported");
+}
+
+TEST(Cpfg, RunsStartBlocksOnceAndStartEachBeforeEveryStepWithGlobals) {
+  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 3\n"
+                         "Start: {count = 0; length = 2;}\n"
+                         "StartEach: {count = count + 1;}\n"
+                         "End: {length = 5;}\n"
+                         "Axiom: A(0)\n"
+                         "A(x) --> F(length)A(count)\n"
+                         "endlsystem\n"),
+            "F(2)F(2)F(2)A(3)");
+}
+
+TEST(Cpfg, RunsStatementsBeforeAConditionAlwaysAndAfterItWhenItHolds) {
+  EXPECT_EQ(
+      derived_cpfg(std::string(kHead) +
+                   "Axiom: A(5)\n"
+                   "A(t) : {t = t - 2; half = t / 2;} t > 0 {twice = half * 4;}"
+                   " --> B(t, half, twice)\nendlsystem\n"),
+      "B(3,1.5,6)");
+  // A rule whose condition fails leaves the parameters to the next one.
+  EXPECT_EQ(derived_cpfg(std::string(kHead) +
+                         "Axiom: A(5)\nA(t) : {t = t - 10;} t > 0 --> X\n"
+                         "A(t) --> Y(t)\nendlsystem\n"),
+            "Y(5)");
+}
+
+TEST(Cpfg, RunsStatementsInDecompositionAndHomomorphismRules) {
+  const Grammar g = cpfg(std::string(kHead) +
+                         "Axiom: A(1)\nA(t) --> A(t)\n"
+                         "decomposition\nA(t) : {t = t * 2;} 1 --> B(t)\n"
+                         "homomorphism\nB(t) : * {l = t + 1;} --> F(l)\n"
+                         "endlsystem\n");
+  EXPECT_EQ(to_string(derive(g), g.alphabet), "B(2)");
+  const Skeleton s = interpret(g);
+  ASSERT_EQ(s.segments.size(), 1U);
+  EXPECT_NEAR(s.segments[0].p1.z, 3.0, 1e-12);
+}
+
+TEST(Cpfg, ReadsLoopsBranchesTheConditionalOperatorAndCpfgsFunctions) {
+  EXPECT_EQ(derived_cpfg("Lsystem: 1\n"
+                         "Start: {s = 0; i = 0; while (i < 4) {s = s + i; "
+                         "i = i + 1;}\n"
+                         "  if (s == 6) {r = 1;} else {r = 2;}\n"
+                         "  do {i = i - 1;} while (i > 0);\n"
+                         "  printf(\"s=%f\\n\", s);}\n"
+                         "Axiom: A(s, r, i, 7 % 3, 1 < 2 ? 7 : 8, trunc(2.5), "
+                         "sign(-3), fabs(-2))\nendlsystem\n"),
+            "A(6,1,0,1,7,3,-1,2)");
+}
+
+TEST(Cpfg, DrawsRandomNumbersFromCpfgsGeneratorErand48) {
+  // glibc's erand48 from cpfg's start {0x330E, 0, 0}: 0.17082803610628972,
+  // then 0.74990198048496381; srand(21) starts it at {0x330E, 21, 0}.
+  const Grammar g = cpfg("Lsystem: 1\nAxiom: A(ran(1), ran(2))\nendlsystem\n");
+  const ModuleString s = derive(g);
+  ASSERT_EQ(s.parameters(0).size(), 2U);
+  EXPECT_DOUBLE_EQ(s.parameters(0)[0], 0.17082803610628972);
+  EXPECT_DOUBLE_EQ(s.parameters(0)[1], 2 * 0.74990198048496381);
+  const Grammar seeded =
+      cpfg("Lsystem: 1\nStart: {srand(21);}\nAxiom: A(ran(1))\nendlsystem\n");
+  EXPECT_DOUBLE_EQ(derive(seeded).parameters(0)[0], 0.45767651808364818);
+  EXPECT_TRUE(g.uses_variables);
+}
+
+TEST(Cpfg, StopsALoopThatNeverEnds) {
+  const Grammar g =
+      cpfg("Lsystem: 1\nStart: {while (1) {x = 1;}}\nAxiom: A\nendlsystem\n");
+  EXPECT_EQ(located_error_of([&] { (void)derive(g); }),
+            "2:9: a loop ran a million times; lsolid stops it");
+}
+
+TEST(Cpfg, HasNoLabelsSoAWordBeforeAColonIsAPredecessor) {
+  EXPECT_EQ(derived_cpfg("#define LEFT 1\n" + std::string(kHead) +
+                         "Axiom: A\nA : LEFT --> F\nendlsystem\n"),
+            "F");
+}
+
+TEST_F(CpfgFiles, ReadsTheFunctionsTheViewFileNames) {
+  write("leaf.l",
+        "Lsystem: 1\nAxiom: A(func(1, 0.25), func(GROWTH, 2))\n"
+        "endlsystem\n");
+  write("leaf.v", "function set: g.fset\nfunction: line.func 100\n");
+  // Collinear control points: the curve is the line y = x...
+  write("line.func",
+        "fver 1 1\nname: line\nsamples: 0\nflip: off\npoints: 4\n"
+        "0 0 1\n0.333333 0.333333 1\n0.666667 0.666667 1\n1 1 1\n");
+  // ...and here y = 2.
+  write("g.fset",
+        "funcgalleryver 1 1\nitems: 1\nfver 1 1\nname: GROWTH\n"
+        "samples: 100\nflip: off\npoints: 4\n0 2\n0.3 2\n0.6 2\n1 2\n");
+  const Grammar g = read("leaf.l");
+  const ModuleString s = derive(g);
+  ASSERT_EQ(s.parameters(0).size(), 2U);
+  // The set comes first: GROWTH is func 1, line.func func 2.
+  EXPECT_NEAR(s.parameters(0)[0], 2.0, 1e-9);
+  EXPECT_NEAR(s.parameters(0)[1], 2.0, 1e-9);  // x clamped to 1
+  write("leaf.l", "Lsystem: 1\nAxiom: A(func(2, 0.25))\nendlsystem\n");
+  EXPECT_NEAR(derive(read("leaf.l")).parameters(0)[0], 0.25, 1e-4);
+  write("leaf.l", "Lsystem: 1\nAxiom: A(func(3, 0.25))\nendlsystem\n");
+  EXPECT_EQ(located_error_of([&] { (void)read("leaf.l"); }),
+            "2:15: func(3, ...): the view file names 2 functions");
 }
 
 TEST(Cpfg, RefusesAViewFileForAnotherNotation) {

@@ -72,6 +72,9 @@ class Derivation {
   [[nodiscard]] int derivation_length() const noexcept;
   /// True when the string streams depth-first.
   [[nodiscard]] bool is_streaming() const noexcept;
+  /// cpfg's global variables and random generator as the derivation left
+  /// them, for the homomorphism to read while interpreting.
+  [[nodiscard]] Variables* variables() noexcept;
   /// The prediction made at construction, if the grammar allowed one.
   [[nodiscard]] const std::optional<SizePrediction>& prediction()
       const noexcept;

@@ -15,6 +15,10 @@
 
 namespace lsys {
 
+/// cpfg's functions for `func(id, x)`: for each id from 1, the values y at
+/// equally spaced x from 0 to 1 (vlab's `.func` files).
+using FunctionTable = std::vector<std::vector<double>>;
+
 /// The names an expression may use: the formal parameters of the production
 /// it belongs to (ABOP §1.10), in slot order, and named constants
 /// (`#define`, `--define`), which are folded at compile time.
@@ -26,6 +30,29 @@ struct ExpressionScope {
   /// Trigonometric functions take and give radians (Python's math, as L-Py
   /// files use it) instead of degrees (cpfg).
   bool radians = false;
+  /// cpfg's local variables of a production: names its statement blocks
+  /// assign, in the slots after the parameters. A statement block that
+  /// assigns a new name adds it.
+  std::vector<std::string>* locals = nullptr;
+  /// cpfg's global variables, assigned in `Start:` and its kin. A block
+  /// compiled with `assign_globals` adds the new names it assigns.
+  std::vector<std::string>* globals = nullptr;
+  bool assign_globals = false;
+  /// What `func(id, x)` reads, when the view file names functions.
+  std::shared_ptr<const FunctionTable> functions;
+  /// cpfg's operators and functions besides ABOP's: `%`, `?:`, `trunc`,
+  /// `sign`, `fabs`, and the random `ran`, `nran`, `bran`, `biran`,
+  /// `srand`.
+  bool cpfg = false;
+};
+
+/// What cpfg's expressions share while deriving: its global variables and
+/// the state of its random number generator, erand48's 48-bit linear
+/// congruence, which starts where cpfg's does (0x330E) so that `ran()`
+/// gives cpfg's numbers.
+struct Variables {
+  std::vector<double> globals;
+  std::uint64_t random_state = 0x330E;
 };
 
 /// An arithmetic or logical expression compiled once into code for a small
@@ -52,11 +79,22 @@ class Expression {
   [[nodiscard]] double constant_value() const noexcept {
     return code_.front().value;
   }
-  /// Evaluates with the actual parameter values in slot order.
-  /// @pre `parameters.size()` covers every slot the expression reads.
+  /// Evaluates with the actual parameter values in slot order (and the
+  /// production's local variables after them).
+  /// @pre `parameters.size()` covers every slot the expression reads, and
+  ///   `variables` is given when uses_variables().
   /// @throws ParseError at the operator for division by zero, and at the
   ///   expression when the result is not a finite number.
-  [[nodiscard]] double evaluate(std::span<const double> parameters) const;
+  [[nodiscard]] double evaluate(std::span<const double> parameters,
+                                Variables* variables = nullptr) const;
+  /// Runs a statement block (parse_statements), which may change `slots`
+  /// and the global variables.
+  /// @pre as evaluate.
+  /// @throws ParseError as evaluate, and when a loop runs a million times.
+  void execute(std::span<double> slots, Variables* variables) const;
+  /// True when the code reads or writes global variables or draws random
+  /// numbers, so that its value depends on what ran before.
+  [[nodiscard]] bool uses_variables() const noexcept { return uses_variables_; }
   /// The byte offset of the expression in its source.
   [[nodiscard]] std::size_t offset() const noexcept { return offset_; }
 
@@ -93,10 +131,26 @@ class Expression {
     Floor,
     Ceil,
     Min,
-    Max
+    Max,
+    Modulo,
+    Trunc,
+    Sign,
+    Ran,
+    Nran,
+    Bran,
+    Biran,
+    Srand,
+    Global,
+    StoreSlot,
+    StoreGlobal,
+    Pop,
+    Jump,
+    JumpIfZero,
+    Select,
+    Func
   };
-  /// One instruction: `value` for Constant, `slot` for Parameter, `offset`
-  /// for the error position of Divide.
+  /// One instruction: `value` for Constant, `slot` for Parameter, Global,
+  /// the stores, and the jump target; `offset` for the error position.
   struct Instruction {
     Op op = Op::Constant;
     std::uint32_t slot = 0;
@@ -108,16 +162,36 @@ class Expression {
   friend Expression parse_expression(std::shared_ptr<const SourceFile>,
                                      std::size_t, std::size_t,
                                      const ExpressionScope&);
+  friend Expression parse_statements(std::shared_ptr<const SourceFile>,
+                                     std::size_t, std::size_t,
+                                     const ExpressionScope&);
+  double run(const double* read, double* write, Variables* variables) const;
+  // Takes compiled code and notes what it needs while running.
+  void adopt(std::vector<Instruction> code, const ExpressionScope& scope);
+
   std::vector<Instruction> code_{Instruction{}};
   std::shared_ptr<const SourceFile> source_;
   std::size_t offset_ = 0;
   int stack_depth_ = 1;
+  bool uses_variables_ = false;
+  std::shared_ptr<const FunctionTable> functions_;
 };
 
 /// Compiles the expression in bytes [begin, end) of a source.
 /// @throws ParseError for a syntax error, a bad number, an undefined name, a
 ///   wrong argument count, or a constant division by zero.
 [[nodiscard]] Expression parse_expression(
+    std::shared_ptr<const SourceFile> source, std::size_t begin,
+    std::size_t end, const ExpressionScope& scope);
+
+/// Compiles cpfg's statements in bytes [begin, end): `{ x = e; if (c) { … }
+/// else { … } while (c) { … } do { … } while (c); f(…); }` (the outer braces
+/// optional). An assignment to a parameter changes it for the rest of the
+/// production; to a new name, makes a local (or, with
+/// `scope.assign_globals`, a global) variable. `printf` and `fprintf`
+/// statements are skipped: lsolid prints nothing of a model's own.
+/// @throws ParseError as parse_expression, and for a malformed statement.
+[[nodiscard]] Expression parse_statements(
     std::shared_ptr<const SourceFile> source, std::size_t begin,
     std::size_t end, const ExpressionScope& scope);
 

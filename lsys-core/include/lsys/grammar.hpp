@@ -67,14 +67,18 @@ class Successor {
   }
   /// True when every parameter expression is constant.
   [[nodiscard]] bool is_constant() const noexcept { return is_constant_; }
+  /// True when some parameter expression reads cpfg's variables or draws a
+  /// random number.
+  [[nodiscard]] bool uses_variables() const noexcept { return uses_variables_; }
   /// The values of a constant successor, laid out by `parameter_begins()`.
   [[nodiscard]] const std::vector<double>& constant_values() const noexcept {
     return constant_values_;
   }
   /// Evaluates every parameter expression into `out` (resized).
+  /// @pre `variables` is given when uses_variables().
   /// @throws ParseError from Expression::evaluate.
-  void instantiate(std::span<const double> slots,
-                   std::vector<double>& out) const;
+  void instantiate(std::span<const double> slots, std::vector<double>& out,
+                   Variables* variables = nullptr) const;
   /// Makes room for `modules` modules without their parameters.
   void reserve(std::size_t modules);
   /// Frees the room the arrays have beyond their size.
@@ -87,6 +91,7 @@ class Successor {
   std::vector<Expression> expressions_;
   std::vector<double> constant_values_;
   bool is_constant_ = true;
+  bool uses_variables_ = false;
 };
 
 /// A production `lc < pred > rc : condition → successor : probability`
@@ -100,6 +105,13 @@ struct Production {
   std::optional<Expression> condition;
   /// The weight of a stochastic production; absent means weight 1.
   std::optional<Expression> probability;
+  /// cpfg's statements run on every match before the condition, and those
+  /// run after it when it holds (parse_statements).
+  std::optional<Expression> before;
+  std::optional<Expression> after;
+  /// How many local variables the statements use, in the slots after the
+  /// formal parameters.
+  int local_count = 0;
   Successor successor;
   std::size_t offset = 0;  ///< byte offset of the production
 
@@ -143,6 +155,16 @@ struct Grammar {
   /// Things that are legal but probably mistakes (a `--define` the file
   /// never reads), for the caller to show.
   std::vector<std::string> warnings;
+  /// cpfg's global variables, by slot, and its blocks of statements: once
+  /// before the axiom, before and after each step, after the last.
+  std::vector<std::string> globals;
+  std::optional<Expression> start;
+  std::optional<Expression> start_each;
+  std::optional<Expression> end_each;
+  std::optional<Expression> end;
+  /// True when something reads or writes cpfg's variables or draws random
+  /// numbers: the string is then rewritten step by step, in order.
+  bool uses_variables = false;
 };
 
 }  // namespace lsys

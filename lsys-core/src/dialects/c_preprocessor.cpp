@@ -76,6 +76,9 @@ class Preprocessor {
     for (const std::string& d : options.defines) {
       overridden_.insert(d.substr(0, d.find('=')));
     }
+    for (const auto& [name, body] : options.predefined) {
+      macros_[name] = Macro{std::nullopt, body};
+    }
   }
 
   std::shared_ptr<const SourceFile> run() {
@@ -149,12 +152,34 @@ class Preprocessor {
         continue;
       }
       if (!directive && options_.tab_continues && end + 1 < clean_.size() &&
-          clean_[end + 1] == '\t' && !is_directive(end + 1)) {
+          ((clean_[end + 1] == '\t' && !is_directive(end + 1)) ||
+           opens_statements(begin, end))) {
         i = end + 1;
         continue;
       }
       return end;
     }
+  }
+
+  // cpfg's statements `{ … }` span lines freely (its lexer reads no line
+  // ends inside them): after a production's `:` before the arrow, or in a
+  // `Start:` block and its kin. Braces elsewhere are polygons.
+  bool opens_statements(std::size_t begin, std::size_t end) const {
+    const std::string_view line(clean_.data() + begin, end - begin);
+    std::size_t stop = line.find("-->");
+    if (stop == std::string_view::npos) stop = line.size();
+    const std::size_t colon = line.find(':');
+    const std::size_t brace = line.find('{');
+    if (colon == std::string_view::npos || brace == std::string_view::npos ||
+        brace < colon || brace > stop) {
+      return false;
+    }
+    int depth = 0;
+    for (std::size_t k = brace; k < stop; ++k) {
+      if (line[k] == '{') ++depth;
+      if (line[k] == '}') --depth;
+    }
+    return depth > 0;
   }
 
   // Copies bytes [begin, end) of the original; splices become blanks.

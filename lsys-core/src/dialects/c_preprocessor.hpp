@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "lsys/source.hpp"
@@ -21,6 +22,9 @@ struct PreprocessOptions {
   /// Numeric macros stay `#define` constants (the `.l`); without it every
   /// macro expands as text (the `.v`, which knows no constants).
   bool keep_constants = true;
+  /// Macros defined before the text, as `-D` gives them (cpfg passes the
+  /// names of a function set this way); always expanded.
+  std::vector<std::pair<std::string, std::string>> predefined;
 };
 
 /// Runs the C preprocessor that cpfg runs on its `.l` and `.v` files

@@ -13,6 +13,7 @@
 #include <system_error>
 
 #include "dialects/c_preprocessor.hpp"
+#include "dialects/cpfg_functions.hpp"
 #include "dialects/cpfg_view.hpp"
 #include "dialects/front_ends.hpp"
 #include "lsys/diagnostic.hpp"
@@ -119,6 +120,7 @@ Draft notation(const CpfgView& view) {
   draft.refused = kRefused;
   draft.syntax.fixed_arity = false;
   draft.syntax.extra_turtle_parameters = true;
+  draft.syntax.cpfg_statements = true;
   Settings& s = draft.defaults;
   s.roll = RollConvention::Cpfg;
   s.angle_deg = view.angle_deg.value_or(45.0);
@@ -197,6 +199,42 @@ void drop_probabilities_without_seed(Grammar& grammar) {
   }
 }
 
+// The view file's functions, read beside it: `function:` files give func's
+// ids in order; a `function set:` gives names too, which cpfg passes to
+// the preprocessor as macros of their ids (`func(LEAF_GROWTH, t)`).
+struct Functions {
+  std::shared_ptr<const FunctionTable> table;
+  std::vector<std::pair<std::string, std::string>> names;
+};
+
+Functions read_functions(const CpfgView& view,
+                         const std::filesystem::path& view_path) {
+  Functions out;
+  std::vector<CpfgFunction> functions;
+  const auto folder = view_path.parent_path();
+  const auto load = [&](const std::string& name) {
+    const auto file = load_source(folder / name);
+    check_text(*file);
+    for (CpfgFunction& f : read_cpfg_functions(*file)) {
+      functions.push_back(std::move(f));
+    }
+  };
+  if (!view.function_set.empty()) {
+    load(view.function_set);
+    for (std::size_t i = 0; i < functions.size(); ++i) {
+      if (!functions[i].name.empty()) {
+        out.names.emplace_back(functions[i].name, std::to_string(i + 1));
+      }
+    }
+  }
+  for (const std::string& name : view.functions) load(name);
+  if (functions.empty()) return out;
+  auto table = std::make_shared<FunctionTable>();
+  for (CpfgFunction& f : functions) table->push_back(std::move(f.samples));
+  out.table = std::move(table);
+  return out;
+}
+
 }  // namespace
 
 Grammar read_cpfg(std::shared_ptr<const SourceFile> source,
@@ -208,10 +246,14 @@ Grammar read_cpfg(std::shared_ptr<const SourceFile> source,
     check_text(*view_source);
     view = read_cpfg_view(*view_source);
   }
-  auto preprocessed = preprocess(
-      *source,
-      PreprocessOptions{.defines = options.defines, .tab_continues = true});
+  const Functions functions =
+      view_path ? read_functions(view, *view_path) : Functions{};
+  auto preprocessed =
+      preprocess(*source, PreprocessOptions{.defines = options.defines,
+                                            .tab_continues = true,
+                                            .predefined = functions.names});
   Draft draft = notation(view);
+  draft.functions = functions.table;
   if (!view_path) {
     draft.warnings.insert(
         draft.warnings.begin(),

@@ -114,6 +114,14 @@ class ViewReader {
     return text_.substr(at, i - at);
   }
 
+  std::string_view file_name(std::size_t& i, std::size_t end) const {
+    skip_blanks(i, end);
+    const std::size_t at = i;
+    while (i < end && text_[i] != ' ' && text_[i] != '\t' && text_[i] != '\r')
+      ++i;
+    return text_.substr(at, i - at);
+  }
+
   static std::optional<CpfgLineStyle> style_named(std::string_view w) {
     if (w.empty()) return std::nullopt;
     switch (std::tolower(static_cast<unsigned char>(w.front()))) {
@@ -193,8 +201,16 @@ class ViewReader {
       if (v < end) view_.surfaces += text_[v];
     } else if (label == "tropism" || label == "torque") {
       ++view_.tropisms;
-    } else if (label == "function" || label == "function set" ||
-               label == "curve" || label == "scale multiplier" ||
+    } else if (label == "function" || label == "function set") {
+      std::size_t k = v;
+      const std::string_view file = file_name(k, end);
+      if (file.empty()) fail(v, "expected a file name");
+      if (label == "function") {
+        view_.functions.emplace_back(file);
+      } else {
+        view_.function_set = std::string(file);
+      }
+    } else if (label == "curve" || label == "scale multiplier" ||
                label == "interpretation past %") {
       // Read where they matter: func() and @Di/@Dd are refused where the
       // L-system uses them.

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "dialects/text_scan.hpp"
+#include "lsys/expression.hpp"
 #include "lsys/settings.hpp"
 #include "lsys/turtle_command.hpp"
 
@@ -116,6 +118,18 @@ struct Syntax {
   /// A turtle symbol may carry more parameters than it reads, and the turtle
   /// ignores the rest (cpfg: `+(20,0)`, `@Ts(1,e)`).
   bool extra_turtle_parameters = false;
+  /// cpfg's expressions and statements: `%`, `?:`, random functions,
+  /// blocks `{ … }` around a condition, global variables.
+  bool cpfg_statements = false;
+};
+
+/// When a block of cpfg's statements runs.
+enum class BlockKind { Start, StartEach, EndEach, End };
+
+/// A `Start: { … }` block and its kin: the statements, braces included.
+struct StatementBlock {
+  BlockKind kind;
+  Range text;
 };
 
 /// What a front end hands the grammar builder: the pieces of a file sorted
@@ -140,6 +154,10 @@ struct Draft {
   std::map<std::string, double> constants;
   /// Modules refused wherever they appear.
   std::vector<RefusedName> refused;
+  /// cpfg's blocks of statements, in file order.
+  std::vector<StatementBlock> blocks;
+  /// cpfg's functions for `func(id, x)`, from the view file.
+  std::shared_ptr<const FunctionTable> functions;
   /// Things the front end left out, for the caller to show.
   std::vector<std::string> warnings;
   /// Reads a parameter written without parentheses after a module name at

@@ -92,11 +92,13 @@ class GrammarBuilder : TextScan {
     read_aliases();
     read_module_declarations();
     read_settings();
+    read_blocks();
     read_axiom();
     grammar_.productions.reserve(draft_.productions.size());
     for (const ProductionText& p : draft_.productions) read_production(p);
     reject_letter_settings_of_modules();
     build_commands();
+    note_variables();
     for (const std::string& name : given_defines_) {
       if (used_constants_.count(name) == 0 && !file_defines_.count(name)) {
         grammar_.warnings.push_back("--define " + name +
@@ -134,6 +136,7 @@ class GrammarBuilder : TextScan {
   // declares cannot be one predecessor, so it is always a label.
   Range strip_label(Range lhs) const {
     lhs = trim(lhs);
+    if (draft_.syntax.cpfg_statements) return lhs;  // cpfg has no labels
     const std::size_t colon = find_top(lhs, ":");
     if (colon == std::string::npos) return lhs;
     const Range label = trim(Range{lhs.begin, colon});
@@ -161,7 +164,42 @@ class GrammarBuilder : TextScan {
     Range predecessor;
     Range right;
     std::optional<Range> condition;
+    std::optional<Range> before;  // cpfg: `{ … } condition { … }`
+    std::optional<Range> after;
   };
+
+  // The `}` that closes the `{` at `open`, within r.
+  std::size_t closing_brace(Range r, std::size_t open) const {
+    int depth = 0;
+    for (std::size_t i = open; i < r.end; ++i) {
+      if (text_[i] == '{') ++depth;
+      if (text_[i] == '}' && --depth == 0) return i;
+    }
+    fail(open, "unclosed '{'");
+  }
+
+  // cpfg: `{ before } condition { after }` around the condition.
+  void split_blocks(Lhs& out) const {
+    Range c = *out.condition;
+    if (text_[c.begin] == '{') {
+      const std::size_t close = closing_brace(c, c.begin);
+      out.before = Range{c.begin, close + 1};
+      c = trim(Range{close + 1, c.end});
+    }
+    if (!c.empty() && text_[c.end - 1] == '}') {
+      const std::size_t open = find_in(c, "{");
+      if (open != std::string::npos && closing_brace(c, open) == c.end - 1) {
+        out.after = Range{open, c.end};
+        c = trim(Range{c.begin, open});
+      }
+    }
+    if (c.empty()) {
+      fail(out.before ? out.before->end : out.condition->begin,
+           "expected a condition ('*' or an expression) beside the "
+           "statements");
+    }
+    out.condition = c;
+  }
 
   Lhs split_lhs(Range lhs_with_label) const {
     if (!draft_.syntax.contexts_and_conditions) {
@@ -180,6 +218,7 @@ class GrammarBuilder : TextScan {
       pattern = trim(Range{lhs.begin, colon});
       out.condition = trim(Range{colon + 1, lhs.end});
       if (out.condition->empty()) fail(colon, "expected a condition after ':'");
+      if (draft_.syntax.cpfg_statements) split_blocks(out);
       if (view(*out.condition) == "*") out.condition.reset();
     }
     out.predecessor = pattern;
@@ -574,13 +613,24 @@ class GrammarBuilder : TextScan {
     if (!lhs.right.empty()) {
       p.right_context = pattern(lhs.right, slots, true, "");
     }
-    const ExpressionScope scope{.parameters = slots,
-                                .constants = &grammar_.constants,
-                                .used_constants = &used_constants_,
-                                .radians = draft_.syntax.radians};
+    std::vector<std::string> locals;
+    const ExpressionScope scope =
+        cpfg_scope(ExpressionScope{.parameters = slots,
+                                   .constants = &grammar_.constants,
+                                   .used_constants = &used_constants_,
+                                   .radians = draft_.syntax.radians},
+                   &locals);
+    if (lhs.before) {
+      p.before =
+          parse_statements(source_, lhs.before->begin, lhs.before->end, scope);
+    }
     if (lhs.condition) {
       p.condition = parse_expression(source_, lhs.condition->begin,
                                      lhs.condition->end, scope);
+    }
+    if (lhs.after) {
+      p.after =
+          parse_statements(source_, lhs.after->begin, lhs.after->end, scope);
     }
     std::vector<Range> rhs = text.rhs;
     if (text.probability) {
@@ -608,6 +658,7 @@ class GrammarBuilder : TextScan {
     for (const Range& r : rhs) joined += view(trim(r));
     if (joined == "*" || joined == "\u03B5") rhs.clear();
     p.successor = modules(rhs, scope);
+    p.local_count = static_cast<int>(locals.size());
     if (text.section != Section::Productions) {
       const char* what = text.section == Section::Decomposition
                              ? "decomposition"
@@ -633,6 +684,64 @@ class GrammarBuilder : TextScan {
     }
   }
 
+  // cpfg's names and functions added to a scope.
+  ExpressionScope cpfg_scope(ExpressionScope scope,
+                             std::vector<std::string>* locals) {
+    if (!draft_.syntax.cpfg_statements) return scope;
+    scope.locals = locals;
+    scope.globals = &grammar_.globals;
+    scope.cpfg = true;
+    scope.functions = draft_.functions;
+    return scope;
+  }
+
+  // `Start: { … }` and its kin, in file order, before anything reads
+  // their variables: what they assign is global.
+  void read_blocks() {
+    for (const StatementBlock& block : draft_.blocks) {
+      ExpressionScope scope =
+          cpfg_scope(ExpressionScope{.constants = &grammar_.constants,
+                                     .used_constants = &used_constants_},
+                     nullptr);
+      scope.assign_globals = true;
+      std::optional<Expression>* slot = nullptr;
+      switch (block.kind) {
+        case BlockKind::Start:
+          slot = &grammar_.start;
+          break;
+        case BlockKind::StartEach:
+          slot = &grammar_.start_each;
+          break;
+        case BlockKind::EndEach:
+          slot = &grammar_.end_each;
+          break;
+        case BlockKind::End:
+          slot = &grammar_.end;
+          break;
+      }
+      if (slot->has_value()) {
+        fail(block.text.begin, "a second block of this kind");
+      }
+      *slot =
+          parse_statements(source_, block.text.begin, block.text.end, scope);
+    }
+  }
+
+  void note_variables() {
+    bool uses = !grammar_.globals.empty() || grammar_.start ||
+                grammar_.start_each || grammar_.end_each || grammar_.end ||
+                grammar_.axiom.uses_variables();
+    for (const auto* list : {&grammar_.productions, &grammar_.decompositions,
+                             &grammar_.homomorphisms}) {
+      for (const Production& p : *list) {
+        uses = uses || p.before || p.after || p.successor.uses_variables() ||
+               (p.condition && p.condition->uses_variables()) ||
+               (p.probability && p.probability->uses_variables());
+      }
+    }
+    grammar_.uses_variables = uses;
+  }
+
   void read_axiom() {
     if (!draft_.axiom) {
       fail(draft_.productions.empty()
@@ -641,9 +750,11 @@ class GrammarBuilder : TextScan {
            "no axiom: give one as 'axiom: F', '\u03C9: F' or a line of "
            "modules before the productions");
     }
-    const ExpressionScope scope{.constants = &grammar_.constants,
-                                .used_constants = &used_constants_,
-                                .radians = draft_.syntax.radians};
+    const ExpressionScope scope =
+        cpfg_scope(ExpressionScope{.constants = &grammar_.constants,
+                                   .used_constants = &used_constants_,
+                                   .radians = draft_.syntax.radians},
+                   nullptr);
     std::vector<Range> ranges{*draft_.axiom};
     ranges.insert(ranges.end(), draft_.axiom_more.begin(),
                   draft_.axiom_more.end());
@@ -789,6 +900,15 @@ class GrammarBuilder : TextScan {
           break;
         }
         case Key::MaximumDepth:
+          if (draft_.syntax.cpfg_statements && constant(v) > 1000.0) {
+            // cpfg stops at its depth as lsolid stops at 1000, the most its
+            // recursion takes safely; models ask for 3000 but rarely use it.
+            grammar_.warnings.push_back("maximum depth " +
+                                        std::string(view(v)) +
+                                        " taken as 1000, lsolid's limit");
+            s.maximum_depth = 1000;
+            break;
+          }
           s.maximum_depth = static_cast<int>(whole(v, 1000));
           break;
         case Key::Ignore:

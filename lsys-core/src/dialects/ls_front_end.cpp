@@ -468,7 +468,10 @@ class LsReader : TextScan {
 
   // Returns true if the line was (part of) a production.
   bool sort_line(Range line, bool indented, bool after_production) {
-    if (variant_ == LsVariant::Cpfg) refuse_cpfg_only(line);
+    if (variant_ == LsVariant::Cpfg) {
+      refuse_cpfg_only(line);
+      if (cpfg_block(line)) return false;
+    }
     if (match_words(line.begin, line.end, "endlsystem") == line.end ||
         match_words(line.begin, line.end, "warnings") == line.end ||
         match_words(line.begin, line.end, "no warnings") == line.end) {
@@ -600,43 +603,47 @@ class LsReader : TextScan {
     fail(line.begin, "unknown directive '#" + std::string(word) + "'");
   }
 
-  // What cpfg files hold that lsolid does not run yet: refused at their
-  // place, by name, rather than misread as settings or productions.
-  void refuse_cpfg_only(Range line) const {
-    static constexpr std::array<std::pair<std::string_view, std::string_view>,
-                                7>
+  // cpfg's `Start: { … }` and its kin: kept for the grammar builder.
+  bool cpfg_block(Range line) {
+    static constexpr std::array<std::pair<std::string_view, BlockKind>, 6>
         kBlocks{{
-            {"start each", "a StartEach: block"},
-            {"starteach", "a StartEach: block"},
-            {"start", "a Start: block"},
-            {"end each", "an EndEach: block"},
-            {"endeach", "an EndEach: block"},
-            {"end", "an End: block"},
-            {"define", "a define: block of arrays"},
+            {"start each", BlockKind::StartEach},
+            {"starteach", BlockKind::StartEach},
+            {"start", BlockKind::Start},
+            {"end each", BlockKind::EndEach},
+            {"endeach", BlockKind::EndEach},
+            {"end", BlockKind::End},
         }};
-    for (const auto& [word, what] : kBlocks) {
+    for (const auto& [word, kind] : kBlocks) {
       const auto end = match_words(line.begin, line.end, word);
       if (!end) continue;
       std::size_t pos = *end;
       while (pos < line.end && is_blank(text_[pos])) ++pos;
+      if (pos >= line.end || text_[pos] != ':') continue;
+      const Range block = trim(Range{pos + 1, line.end});
+      if (block.empty() || text_[block.begin] != '{') {
+        fail(pos + 1, "expected '{' and statements after ':'");
+      }
+      draft_.blocks.push_back(StatementBlock{kind, block});
+      return true;
+    }
+    return false;
+  }
+
+  // What cpfg files hold that lsolid does not run yet: refused at their
+  // place, by name, rather than misread as settings or productions.
+  void refuse_cpfg_only(Range line) const {
+    if (const auto end = match_words(line.begin, line.end, "define")) {
+      std::size_t pos = *end;
+      while (pos < line.end && is_blank(text_[pos])) ++pos;
       if (pos < line.end && text_[pos] == ':') {
-        fail(line.begin, std::string("cpfg's statements (") +
-                             std::string(what) +
-                             ", global variables) are not supported");
+        fail(line.begin, "cpfg's arrays (a define: block) are not supported");
       }
     }
     if (match_words(line.begin, line.end, "ring lsystem") == line.end) {
       fail(line.begin,
            "a ring L-system (contexts that wrap around the string) is not "
            "supported");
-    }
-    if (const auto arrow = find_arrow(line, false)) {
-      const std::size_t brace = find_in(arrow->lhs, "{");
-      if (brace != std::string::npos) {
-        fail(brace,
-             "cpfg's statement blocks '{ ... }' in a production are not "
-             "supported");
-      }
     }
   }
 

@@ -1,7 +1,7 @@
 // Copyright 2026 the lsolid authors
 // SPDX-License-Identifier: MIT
 //
-// Fuzzes the .ls reader with derivation and turtle under small limits. Bad
+// Fuzzes the readers of every notation with derivation and turtle under small limits. Bad
 // input must end in lsys::ParseError; anything else (a crash, a sanitizer
 // report, another exception, or a skeleton that breaks its invariants) is
 // a finding.
@@ -50,12 +50,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data,
   const lsys::DerivationOptions limits{.max_segments = 20'000,
                                        .max_modules = 200'000,
                                        .max_memory_bytes = 64U << 20U};
+  // The file's name decides some notations (a `.ls` is never cpfg or
+  // Fractint, only a `.lpy` is L-Py): vary it so that every front end is
+  // reached.
+  static constexpr const char* kNames[] = {"fuzz.ls", "fuzz.l", "fuzz.lpy"};
   try {
     const lsys::Grammar grammar = lsys::parse_grammar_text(
         text,
         {.extra_settings = {"wall", "height", "size", "scale", "tolerance",
                             "base", "colors"}},
-        "fuzz.ls");
+        kNames[size % 3]);
     lsys::DerivationOptions options = limits;
     // Deep derivations of tiny strings take long without finding more.
     options.derivation_length =

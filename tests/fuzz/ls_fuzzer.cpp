@@ -1,10 +1,10 @@
 // Copyright 2026 the lsolid authors
 // SPDX-License-Identifier: MIT
 //
-// Fuzzes the readers of every notation with derivation and turtle under small limits. Bad
-// input must end in lsys::ParseError; anything else (a crash, a sanitizer
-// report, another exception, or a skeleton that breaks its invariants) is
-// a finding.
+// Fuzzes the readers of every notation with derivation and turtle under small
+// limits. Bad input must end in lsys::ParseError; anything else (a crash, a
+// sanitizer report, another exception, or a skeleton that breaks its
+// invariants) is a finding.
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>

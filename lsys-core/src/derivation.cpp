@@ -198,6 +198,13 @@ class Derivation::Impl {
         throw error_at(*grammar_.source, rule->probability->offset(),
                        "a probability cannot be negative");
       }
+      // Each candidate's bound values, so that the chosen one's are in
+      // slots_ without matching it again (and without running its cpfg
+      // statements twice).
+      if (candidate_slots_.size() <= candidates_.size()) {
+        candidate_slots_.emplace_back();
+      }
+      candidate_slots_[candidates_.size()].assign(slots_.begin(), slots_.end());
       candidates_.emplace_back(rule, w);
       total += w;
     }
@@ -209,11 +216,14 @@ class Derivation::Impl {
     }
     const double u = stochastic_uniform(seed_, step, position()) * total;
     double sum = 0.0;
-    for (const auto& [rule, w] : candidates_) {
-      sum += w;
-      if (u < sum) return rule;
+    for (std::size_t k = 0; k < candidates_.size(); ++k) {
+      sum += candidates_[k].second;
+      if (u < sum || k + 1 == candidates_.size()) {
+        slots_.swap(candidate_slots_[k]);
+        return candidates_[k].first;
+      }
     }
-    return candidates_.back().first;
+    return nullptr;  // not reached: the last candidate is always taken
   }
 
   // --- Streaming ----------------------------------------------------------
@@ -396,14 +406,7 @@ class Derivation::Impl {
     if (!rule.right_context.empty() && !match_right(s, i, rule.right_context)) {
       return false;
     }
-    // cpfg: statements before the condition run on every match, those
-    // after it only when it holds (CPFG Reference Manual §3.2).
-    slots_.resize(slots_.size() + static_cast<std::size_t>(rule.local_count),
-                  0.0);
-    if (rule.before) rule.before->execute(slots_, &variables_);
-    if (!condition_holds(rule, slots_, &variables_)) return false;
-    if (rule.after) rule.after->execute(slots_, &variables_);
-    return true;
+    return statements_and_condition_hold(rule, slots_, &variables_);
   }
 
   void compute_matches(const ModuleString& s) {
@@ -428,7 +431,9 @@ class Derivation::Impl {
       if (const Production* d = decompositions_.first_applicable(
               symbol, params, &variables_, &slots)) {
         std::vector<double> values;
-        d->successor.instantiate(slots, values, &variables_);
+        d->successor.instantiate(
+            d->has_statements() ? std::span<const double>(slots) : params,
+            values, &variables_);
         const auto& begins = d->successor.parameter_begins();
         for (std::size_t k = 0; k < d->successor.size(); ++k) {
           append_decomposed(out, d->successor.symbols()[k],
@@ -525,11 +530,6 @@ class Derivation::Impl {
               symbol, k,
               [&](const Production& r) { return applies(string_, i, r); },
               [&] { return static_cast<std::uint64_t>(i); });
-          // A stochastic choice evaluates every candidate, leaving the slots
-          // of the last; bind the chosen rule's again.
-          if (rule != nullptr && is_stochastic_ && stochastic_symbol_[symbol]) {
-            (void)applies(string_, i, *rule);
-          }
         }
         if (rule != nullptr) {
           append_successor(next, rule->successor, slots_, k + 1);
@@ -583,6 +583,7 @@ class Derivation::Impl {
   std::vector<double> slots_;
   Variables variables_;
   std::vector<std::pair<const Production*, double>> candidates_;
+  std::vector<std::vector<double>> candidate_slots_;
   std::uint64_t modules_ = 0;
   double segments_ = 0.0;
   std::vector<double> segment_weight_;

@@ -558,7 +558,10 @@ class Compiler {
         scope_.functions == nullptr ? 0 : scope_.functions->size();
     const double k = number.value;
     if (k < 1.0 || k > static_cast<double>(count) || k != std::floor(k)) {
-      fail(number.offset, "func(" + std::to_string(static_cast<long>(k)) +
+      std::array<char, 32> text{};
+      const auto written =
+          std::to_chars(text.data(), text.data() + text.size(), k);
+      fail(number.offset, "func(" + std::string(text.data(), written.ptr) +
                               ", ...): the view file names " +
                               std::to_string(count) +
                               (count == 1 ? " function" : " functions"));
@@ -967,8 +970,9 @@ double Expression::run(const double* read, double* write,
       case Op::Func: {
         // cpfg clamps x to [0, 1]; between samples, a straight line.
         const std::vector<double>& y = (*functions_)[in.slot];
-        const double x =
-            std::clamp(at(top), 0.0, 1.0) * static_cast<double>(y.size() - 1);
+        const double v = at(top);  // NaN reads as 0, as the clamp's low end
+        const double x = (v > 0.0 ? std::min(v, 1.0) : 0.0) *
+                         static_cast<double>(y.size() - 1);
         const auto i = std::min(static_cast<std::size_t>(x), y.size() - 2);
         const double f = x - static_cast<double>(i);
         at(top) = y[i] + f * (y[i + 1] - y[i]);
@@ -1005,8 +1009,13 @@ double Expression::run(const double* read, double* write,
       }
       case Op::Srand: {
         // cpfg's srand(s): erand48's state {0x330E, s & 0xFFFF, s >> 16}.
-        const auto seed = static_cast<std::uint64_t>(
-            static_cast<std::uint32_t>(static_cast<std::int64_t>(at(top))));
+        // A seed beyond 64 bits (or NaN) has no integer: 0, not UB.
+        const double value = at(top);
+        const auto whole = std::fabs(value) < 9.2e18
+                               ? static_cast<std::int64_t>(value)
+                               : std::int64_t{0};
+        const auto seed =
+            static_cast<std::uint64_t>(static_cast<std::uint32_t>(whole));
         need_variables(in).random_state =
             ((seed >> 16U) << 32U) | ((seed & 0xFFFFU) << 16U) | 0x330EU;
         at(top) = 0.0;

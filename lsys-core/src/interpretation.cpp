@@ -150,7 +150,11 @@ class Interpreter {
               &slot_buffers_[static_cast<std::size_t>(depth)])) {
         std::vector<double>& values = buffers_[static_cast<std::size_t>(depth)];
         rule->successor.instantiate(
-            slot_buffers_[static_cast<std::size_t>(depth)], values, variables_);
+            rule->has_statements()
+                ? std::span<const double>(
+                      slot_buffers_[static_cast<std::size_t>(depth)])
+                : params,
+            values, variables_);
         const auto& begins = rule->successor.parameter_begins();
         const auto& symbols = rule->successor.symbols();
         for (std::size_t k = 0; k < symbols.size(); ++k) {

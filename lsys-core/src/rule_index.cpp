@@ -15,8 +15,7 @@ RuleIndex::RuleIndex(const std::vector<Production>& rules,
   for (std::size_t s = 0; s < alphabet_size; ++s) {
     const auto& list = by_symbol_[s];
     if (list.size() == 1 && !list[0]->condition && !list[0]->probability &&
-        !list[0]->before && !list[0]->after &&
-        !list[0]->is_context_sensitive()) {
+        !list[0]->has_statements() && !list[0]->is_context_sensitive()) {
       only_[s] = list[0];
     }
   }
@@ -30,23 +29,15 @@ const Production* RuleIndex::first_applicable(
         static_cast<int>(parameters.size())) {
       continue;
     }
-    if (!rule->before && !rule->after && rule->local_count == 0) {
-      if (!condition_holds(*rule, parameters, variables)) continue;
-      if (slots != nullptr) slots->assign(parameters.begin(), parameters.end());
-      return rule;
+    if (!rule->has_statements()) {
+      if (condition_holds(*rule, parameters, variables)) return rule;
+      continue;
     }
     if (slots == nullptr) {
       throw std::logic_error("first_applicable: statements need slots");
     }
-    // cpfg: statements before the condition on every match, those after
-    // it when it holds (CPFG Reference Manual §3.2).
     slots->assign(parameters.begin(), parameters.end());
-    slots->resize(parameters.size() +
-                  static_cast<std::size_t>(rule->local_count));
-    if (rule->before) rule->before->execute(*slots, variables);
-    if (!condition_holds(*rule, *slots, variables)) continue;
-    if (rule->after) rule->after->execute(*slots, variables);
-    return rule;
+    if (statements_and_condition_hold(*rule, *slots, variables)) return rule;
   }
   return nullptr;
 }

@@ -31,9 +31,10 @@ class RuleIndex {
     return only_[symbol];
   }
   /// The first context-free rule whose arity matches and whose condition
-  /// holds for these parameters, else null. `slots` receives the values
-  /// its successor reads: the parameters as cpfg's statements left them,
-  /// and the rule's local variables.
+  /// holds for these parameters, else null. For a rule with statements,
+  /// `slots` receives the values its successor reads (the parameters as
+  /// the statements left them, then the rule's local variables); other
+  /// rules read `parameters` as they are.
   /// @pre `slots` is given when a rule has statements.
   /// @throws ParseError when a condition or a statement fails.
   [[nodiscard]] const Production* first_applicable(
@@ -52,6 +53,19 @@ class RuleIndex {
                                           std::span<const double> slots,
                                           Variables* variables = nullptr) {
   return !rule.condition || rule.condition->evaluate(slots, variables) != 0.0;
+}
+
+/// cpfg (CPFG Reference Manual §3.2): the statements before a rule's
+/// condition run on every match, those after it only when it holds.
+/// `slots` holds the bound parameters; the rule's locals are added.
+/// @throws ParseError when a condition or a statement fails.
+[[nodiscard]] inline bool statements_and_condition_hold(
+    const Production& rule, std::vector<double>& slots, Variables* variables) {
+  slots.resize(slots.size() + static_cast<std::size_t>(rule.local_count), 0.0);
+  if (rule.before) rule.before->execute(slots, variables);
+  if (!condition_holds(rule, slots, variables)) return false;
+  if (rule.after) rule.after->execute(slots, variables);
+  return true;
 }
 
 }  // namespace lsys

@@ -169,6 +169,10 @@ TEST(Cpfg, PlacesErrorsAfterAnExpandedMacroWhereTheyStandInTheFile) {
             "3:18: unclosed '('");
   EXPECT_EQ(cpfg_error("#define M(a,b) F(a)\nLsystem: 1\nAxiom: M(1)\n"),
             "3:8: macro 'M' takes 2 arguments, here 1");
+  // An unclosed call inside a macro's body is placed at the use.
+  EXPECT_EQ(cpfg_error("#define A(x) x\n#define B A(1\nLsystem: 1\n"
+                       "Axiom: F B\n"),
+            "4:10: unclosed '(' in the call of macro 'A'");
   EXPECT_EQ(cpfg_error("Lsystem: 1\n#if 1\nAxiom: F\n"),
             "2:1: '#if' without '#endif'");
   EXPECT_EQ(cpfg_error("#include \"leaf.l\"\nLsystem: 1\nAxiom: F\n"),
@@ -281,6 +285,16 @@ TEST(Cpfg, RunsStatementsBeforeAConditionAlwaysAndAfterItWhenItHolds) {
             "Y(5)");
 }
 
+TEST(Cpfg, RunsTheStatementsOfAStochasticChoiceOnce) {
+  // Both rules apply; the first always wins (the second weighs 0). Its
+  // statements ran once, when the candidates were weighed.
+  EXPECT_EQ(derived_cpfg("Lsystem: 1\nseed: 3\nderivation length: 1\n"
+                         "Start: {c = 0;}\nAxiom: A\n"
+                         "A : {c = c + 1;} 1 --> B(c) : 1\n"
+                         "A --> C(c) : 0\nendlsystem\n"),
+            "B(1)");
+}
+
 TEST(Cpfg, RunsStatementsInDecompositionAndHomomorphismRules) {
   const Grammar g = cpfg(std::string(kHead) +
                          "Axiom: A(1)\nA(t) --> A(t)\n"
@@ -316,6 +330,13 @@ TEST(Cpfg, DrawsRandomNumbersFromCpfgsGeneratorErand48) {
   const Grammar seeded =
       cpfg("Lsystem: 1\nStart: {srand(21);}\nAxiom: A(ran(1))\nendlsystem\n");
   EXPECT_DOUBLE_EQ(derive(seeded).parameters(0)[0], 0.45767651808364818);
+  // A seed with no integer (beyond 64 bits) starts from 0, as srand(0).
+  const Grammar huge = cpfg(
+      "Lsystem: 1\nStart: {srand(1e300);}\nAxiom: A(ran(1))\nendlsystem\n");
+  const Grammar zero =
+      cpfg("Lsystem: 1\nStart: {srand(0);}\nAxiom: A(ran(1))\nendlsystem\n");
+  EXPECT_DOUBLE_EQ(derive(huge).parameters(0)[0],
+                   derive(zero).parameters(0)[0]);
   EXPECT_TRUE(g.uses_variables);
 }
 
@@ -353,9 +374,16 @@ TEST_F(CpfgFiles, ReadsTheFunctionsTheViewFileNames) {
   EXPECT_NEAR(s.parameters(0)[1], 2.0, 1e-9);  // x clamped to 1
   write("leaf.l", "Lsystem: 1\nAxiom: A(func(2, 0.25))\nendlsystem\n");
   EXPECT_NEAR(derive(read("leaf.l")).parameters(0)[0], 0.25, 1e-4);
+  // x that is not a number reads as 0, the low end of the clamp.
+  write("leaf.l", "Lsystem: 1\nAxiom: A(func(2, sqrt(-1)) + 5)\nendlsystem\n");
+  EXPECT_NEAR(derive(read("leaf.l")).parameters(0)[0], 5.0, 1e-9);
   write("leaf.l", "Lsystem: 1\nAxiom: A(func(3, 0.25))\nendlsystem\n");
   EXPECT_EQ(located_error_of([&] { (void)read("leaf.l"); }),
             "2:15: func(3, ...): the view file names 2 functions");
+  write("line.func",
+        "fver 1 1\nname: line\nsamples: 1e9\nflip: off\npoints: 4\n");
+  EXPECT_EQ(located_error_of([&] { (void)read("leaf.l"); }),
+            "3:10: samples must be a whole number from 0 to 100000");
 }
 
 TEST(Cpfg, RefusesAViewFileForAnotherNotation) {

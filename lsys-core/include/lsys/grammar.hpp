@@ -119,6 +119,11 @@ struct Production {
   [[nodiscard]] bool is_context_sensitive() const noexcept {
     return !left_context.empty() || !right_context.empty();
   }
+  /// True when cpfg's statements run before or after its condition (and
+  /// so its successor reads slots they wrote, not the module's values).
+  [[nodiscard]] bool has_statements() const noexcept {
+    return before.has_value() || after.has_value();
+  }
 };
 
 /// An L-system as read from a `.ls` file: alphabet, axiom, productions,

@@ -223,16 +223,40 @@ class Preprocessor {
       return;
     }
     if (!active()) return;
+    const std::string_view text = std::string_view(clean_).substr(0, end);
     std::size_t copied = begin;
-    std::size_t i = begin;
-    while (i < end) {
-      const char c = clean_[i];
+    for (auto use = next_use(text, begin, {}, std::nullopt); use;
+         use = next_use(text, use->after, {}, std::nullopt)) {
+      emit_verbatim(copied, use->begin);
+      emit_expansion(use->begin, use->expansion);
+      copied = use->after;
+    }
+    emit_verbatim(copied, end);
+  }
+
+  // A macro's use in a text, and what it expands to.
+  struct Use {
+    std::size_t begin;
+    std::size_t after;
+    std::string expansion;
+  };
+
+  // The first use at or after `from` of a macro not in `disabled`: strings
+  // and numbers are skipped (`1e5` holds no name), and a macro with
+  // parameters is a use only where `(` follows. Errors are placed at `at`,
+  // or at the use itself where the text is the source's.
+  std::optional<Use> next_use(std::string_view text, std::size_t from,
+                              const std::set<std::string>& disabled,
+                              std::optional<std::size_t> at) {
+    std::size_t i = from;
+    while (i < text.size()) {
+      const char c = text[i];
       if (c == '"') {
-        i = skip_string(clean_, i, end);
+        i = skip_string(text, i, text.size());
         continue;
       }
       if (std::isdigit(static_cast<unsigned char>(c)) != 0) {
-        i = skip_number(clean_, i, end);
+        i = skip_number(text, i, text.size());
         continue;
       }
       if (!is_ident_start(c)) {
@@ -240,36 +264,33 @@ class Preprocessor {
         continue;
       }
       std::size_t j = i;
-      while (j < end && is_ident_char(clean_[j])) ++j;
-      const std::string name = clean_.substr(i, j - i);
+      while (j < text.size() && is_ident_char(text[j])) ++j;
+      const std::string name(text.substr(i, j - i));
       const auto it = macros_.find(name);
-      if (it == macros_.end()) {
+      if (it == macros_.end() || disabled.count(name) != 0) {
         i = j;
         continue;
       }
-      std::size_t after = j;
-      std::set<std::string> disabled{name};
-      std::string expansion;
-      if (it->second.parameters) {
-        std::size_t open = j;
-        while (open < end && (is_space(clean_[open]) || clean_[open] == '\n'))
-          ++open;
-        if (open >= end || clean_[open] != '(') {
-          i = j;
-          continue;
-        }
-        std::vector<std::string> arguments;
-        after = read_arguments(std::string_view(clean_).substr(0, end), open,
-                               arguments, i);
-        expansion = call(it->second, arguments, disabled, name, i);
-      } else {
-        expansion = expand(it->second.body, disabled, i);
+      const std::size_t where = at.value_or(i);
+      std::set<std::string> inner = disabled;
+      inner.insert(name);
+      if (!it->second.parameters) {
+        return Use{i, j, expand(it->second.body, inner, where)};
       }
-      emit_verbatim(copied, i);
-      emit_expansion(i, expansion);
-      copied = i = after;
+      std::size_t open = j;
+      while (open < text.size() && (is_space(text[open]) || text[open] == '\n'))
+        ++open;
+      if (open >= text.size() || text[open] != '(') {
+        i = j;
+        continue;
+      }
+      std::vector<std::string> arguments;
+      const std::size_t after =
+          read_arguments(text, open, arguments, name, where);
+      return Use{i, after,
+                 call(it->second, std::move(arguments), disabled, name, where)};
     }
-    emit_verbatim(copied, end);
+    return std::nullopt;
   }
 
   static std::size_t skip_string(std::string_view text, std::size_t i,
@@ -294,7 +315,7 @@ class Preprocessor {
   // Reads `( a, b )` from `open`; returns the offset after `)`.
   std::size_t read_arguments(std::string_view text, std::size_t open,
                              std::vector<std::string>& arguments,
-                             std::size_t at) const {
+                             const std::string& name, std::size_t at) const {
     int depth = 0;
     std::size_t start = open + 1;
     for (std::size_t k = open; k < text.size(); ++k) {
@@ -313,8 +334,7 @@ class Preprocessor {
         start = k + 1;
       }
     }
-    fail(at, "unclosed '(' in the call of macro '" +
-                 std::string(text.substr(at, open - at)) + "'");
+    fail(at, "unclosed '(' in the call of macro '" + name + "'");
   }
 
   std::string call(const Macro& macro, std::vector<std::string> arguments,
@@ -363,52 +383,19 @@ class Preprocessor {
 
   // Expands the macros of a text that is not in the source (a body, an
   // argument); errors are placed at `at`, the use that led here.
-  std::string expand(const std::string& text, std::set<std::string> disabled,
-                     std::size_t at) {
+  std::string expand(const std::string& text,
+                     const std::set<std::string>& disabled, std::size_t at) {
     if (++depth_ > kMaxDepth) fail(at, "macros expand too deeply");
     std::string out;
-    for (std::size_t i = 0; i < text.size();) {
-      const char c = text[i];
-      if (c == '"' || std::isdigit(static_cast<unsigned char>(c)) != 0) {
-        const std::size_t end = c == '"' ? skip_string(text, i, text.size())
-                                         : skip_number(text, i, text.size());
-        out.append(text, i, end - i);
-        i = end;
-        continue;
-      }
-      if (!is_ident_start(c)) {
-        out += c;
-        ++i;
-        continue;
-      }
-      std::size_t j = i;
-      while (j < text.size() && is_ident_char(text[j])) ++j;
-      const std::string name = text.substr(i, j - i);
-      const auto it = macros_.find(name);
-      if (it == macros_.end() || disabled.count(name) != 0) {
-        out += name;
-        i = j;
-        continue;
-      }
-      if (!it->second.parameters) {
-        std::set<std::string> inner = disabled;
-        inner.insert(name);
-        out += expand(it->second.body, inner, at);
-        i = j;
-        continue;
-      }
-      std::size_t open = j;
-      while (open < text.size() && is_space(text[open])) ++open;
-      if (open >= text.size() || text[open] != '(') {
-        out += name;
-        i = j;
-        continue;
-      }
-      std::vector<std::string> arguments;
-      const std::size_t after = read_arguments(text, open, arguments, at);
-      out += call(it->second, arguments, disabled, name, at);
-      i = after;
+    std::size_t copied = 0;
+    for (auto use = next_use(text, 0, disabled, at); use;
+         use = next_use(text, use->after, disabled, at)) {
+      out.append(text, copied, use->begin - copied);
+      out += use->expansion;
+      copied = use->after;
+      if (out.size() > kMaxExpansion) fail(at, "a macro expands to too much");
     }
+    out.append(text, copied);
     if (out.size() > kMaxExpansion) fail(at, "a macro expands to too much");
     --depth_;
     return out;

@@ -8,7 +8,6 @@
 // where they differ), which are not ABOP's in three places: `$` ends a
 // sub-L-system, `'` means nothing, `_` changes the elasticity. What cpfg
 // can draw and lsolid cannot is refused by name (docs/dialects/cpfg.md).
-#include <algorithm>
 #include <filesystem>
 #include <system_error>
 
@@ -128,7 +127,7 @@ Draft notation(const CpfgView& view) {
   s.width_scale = style == CpfgLineStyle::Pixel ? kStepsPerPixel : 1.0;
   s.initial_width = view.line_width.value_or(1.0);  // scaled as all widths
   s.width_increment = view.width_increment.value_or(0.0);
-  s.initial_color = std::clamp(view.initial_color.value_or(0), 0, 255);
+  s.initial_color = view.initial_color.value_or(0);  // 0 to 511
   if (view.tropism_direction) {
     // cpfg's Y is up; lsolid's Z.
     const glm::dvec3& t = *view.tropism_direction;
@@ -167,26 +166,8 @@ void refuse_cylinder_braces(const Grammar& grammar) {
 
 // cpfg makes an L-system stochastic only with `seed:`; without it the
 // probabilities are ignored, with a warning (lsys_input.y).
-bool has_seed_line(std::string_view text) {
-  std::size_t start = 0;
-  while (start < text.size()) {
-    std::size_t i = start;
-    while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
-    if (text.size() - i >= 4 &&
-        (text.substr(i, 4) == "seed" || text.substr(i, 4) == "Seed")) {
-      i += 4;
-      while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
-      if (i < text.size() && text[i] == ':') return true;
-    }
-    const std::size_t end = text.find('\n', start);
-    if (end == std::string_view::npos) break;
-    start = end + 1;
-  }
-  return false;
-}
-
 void drop_probabilities_without_seed(Grammar& grammar) {
-  if (has_seed_line(grammar.source->text())) return;
+  if (grammar.settings.seed_offset) return;
   bool dropped = false;
   for (Production& p : grammar.productions) {
     dropped = dropped || p.probability.has_value();

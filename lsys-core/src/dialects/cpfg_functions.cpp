@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
+#include <string>
 #include <string_view>
 
 #include "lsys/diagnostic.hpp"
@@ -80,7 +82,7 @@ class FunctionReader {
       number();
       number();
       expect("items:");
-      const int items = static_cast<int>(number());
+      const int items = count(1, 1000, "items");
       for (int i = 0; i < items; ++i) out.push_back(function());
     } else {
       out.push_back(function());
@@ -119,13 +121,28 @@ class FunctionReader {
     if (word() != w) fail("expected '" + std::string(w) + "'");
   }
 
+  // A count in [least, most], refused otherwise (a huge `samples:` would
+  // take hours, and a cast of it is undefined).
+  int count(int least, int most, const char* what) {
+    const std::size_t at = pos_;
+    const double value = number();
+    if (!(value >= least && value <= most) || value != std::floor(value)) {
+      pos_ = at;
+      skip_blanks();
+      fail(std::string(what) + " must be a whole number from " +
+           std::to_string(least) + " to " + std::to_string(most));
+    }
+    return static_cast<int>(value);
+  }
+
   double number() {
     skip_blanks();
     double value = 0.0;
     const char* first = text_.data() + pos_;
     const auto [ptr, ec] =
         std::from_chars(first, text_.data() + text_.size(), value);
-    if (ec != std::errc() || ptr == first) fail("expected a number");
+    if (ec != std::errc() || ptr == first || !std::isfinite(value))
+      fail("expected a number");
     pos_ = static_cast<std::size_t>(ptr - text_.data());
     return value;
   }
@@ -153,7 +170,7 @@ class FunctionReader {
       expect("name:");
       f.name = line_rest();
       expect("samples:");
-      samples = static_cast<int>(number());
+      samples = count(0, 100000, "samples");
       expect("flip:");
       word();
       if (word_is("background:")) {
@@ -168,12 +185,9 @@ class FunctionReader {
       fail("expected a function file: 'fver 1 1' or 'range:'");
     }
     expect("points:");
-    const int count = static_cast<int>(number());
-    if (count < 4 || count > 10000) {
-      fail("a function needs 4 to 10000 control points");
-    }
+    const int points_given = count(4, 10000, "points");
     std::vector<Point> points;
-    for (int i = 0; i < count; ++i) {
+    for (int i = 0; i < points_given; ++i) {
       const double x = number();
       const double y = number();
       int multiplicity = 1;
@@ -182,7 +196,7 @@ class FunctionReader {
       while (k < text_.size() && (text_[k] == ' ' || text_[k] == '\t')) ++k;
       if (k < text_.size() &&
           std::isdigit(static_cast<unsigned char>(text_[k])) != 0) {
-        multiplicity = std::clamp(static_cast<int>(number()), 1, 3);
+        multiplicity = count(1, 3, "a multiplicity");
       }
       for (int m = 0; m < multiplicity; ++m) points.push_back(Point{x, y});
     }

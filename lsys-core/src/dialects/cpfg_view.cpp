@@ -8,9 +8,11 @@
 // behaviour is taken, as docs/dialects/cpfg.md says.
 #include "dialects/cpfg_view.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <string_view>
 
 #include "dialects/c_preprocessor.hpp"
@@ -101,7 +103,8 @@ class ViewReader {
     const char* first = text_.data() + i;
     if (i < end && text_[i] == '+') ++first;
     const auto [ptr, ec] = std::from_chars(first, text_.data() + end, value);
-    if (ec != std::errc() || ptr == first) fail(at, "expected a number");
+    if (ec != std::errc() || ptr == first || !std::isfinite(value))
+      fail(at, "expected a number");
     i = static_cast<std::size_t>(ptr - text_.data());
     return value;
   }
@@ -184,7 +187,10 @@ class ViewReader {
     } else if (label == "line width increment") {
       view_.width_increment = number(v, end);
     } else if (label == "initial color") {
-      view_.initial_color = static_cast<int>(number(v, end));
+      // Indices run 0 to 255 in cpfg (two maps: to 511); clamped before
+      // the cast, which would be undefined for a huge number.
+      view_.initial_color =
+          static_cast<int>(std::clamp(number(v, end), 0.0, 511.0));
     } else if (label == "color increment") {
       view_.color_increment = number(v, end);
     } else if (label == "tropism direction") {
@@ -196,11 +202,6 @@ class ViewReader {
       view_.elasticity = number(v, end);
     } else if (label == "elasticity increment") {
       view_.elasticity_increment = number(v, end);
-    } else if (label == "surface") {
-      skip_blanks(v, end);
-      if (v < end) view_.surfaces += text_[v];
-    } else if (label == "tropism" || label == "torque") {
-      ++view_.tropisms;
     } else if (label == "function" || label == "function set") {
       std::size_t k = v;
       const std::string_view file = file_name(k, end);
@@ -210,10 +211,11 @@ class ViewReader {
       } else {
         view_.function_set = std::string(file);
       }
-    } else if (label == "curve" || label == "scale multiplier" ||
+    } else if (label == "surface" || label == "tropism" || label == "torque" ||
+               label == "curve" || label == "scale multiplier" ||
                label == "interpretation past %") {
-      // Read where they matter: func() and @Di/@Dd are refused where the
-      // L-system uses them.
+      // What uses them (`~`, `@Ts`, curveX, `@Di`) is refused where the
+      // L-system writes it.
     } else {
       for (std::string_view known : kViewOnly) {
         if (label == known) return;

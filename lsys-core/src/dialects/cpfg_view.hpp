@@ -27,11 +27,9 @@ struct CpfgView {
   std::optional<glm::dvec3> tropism_direction;  ///< in cpfg's frame, Y up
   std::optional<double> elasticity;             ///< `initial elasticity`
   std::optional<double> elasticity_increment;
-  std::string surfaces;  ///< the one-letter ids of `surface:` lines
   /// `function:` files in order (func's ids from 1), or a `function set:`.
   std::vector<std::string> functions;
   std::string function_set;
-  int tropisms = 0;                   ///< `tropism:` and `torque:` lines
   std::vector<std::string> warnings;  ///< commands cpfg does not know
 };
 

@@ -886,6 +886,7 @@ class GrammarBuilder : TextScan {
           break;
         case Key::Seed:
           s.seed = static_cast<std::uint64_t>(whole(v, 9007199254740992.0));
+          s.seed_offset = v.begin;
           break;
         case Key::Roll: {
           std::string word;

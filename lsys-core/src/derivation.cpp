@@ -50,7 +50,7 @@ class Derivation::Impl {
     // was rewritten before it: the string is rewritten in cpfg's order.
     is_streaming_ =
         !is_context_sensitive_ && !has_cut(grammar) && !grammar.uses_variables;
-    variables_.globals.assign(grammar.globals.size(), 0.0);
+    variables_ = initial_variables(grammar);
     check_prediction();
     if (is_streaming_) {
       expanded_.assign(static_cast<std::size_t>(n_) + 1, 0);

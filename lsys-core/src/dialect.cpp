@@ -10,12 +10,13 @@
 namespace lsys {
 namespace {
 
-constexpr std::array<std::pair<std::string_view, Dialect>, 5> kNames{{
+constexpr std::array<std::pair<std::string_view, Dialect>, 6> kNames{{
     {"ls", Dialect::Ls},
     {"lparser", Dialect::Lparser},
     {"fractint", Dialect::Fractint},
     {"lpy", Dialect::Lpy},
     {"cpfg", Dialect::Cpfg},
+    {"lowclouds", Dialect::Lowclouds},
 }};
 
 std::string_view trimmed(std::string_view s) {
@@ -83,6 +84,43 @@ bool is_lsystem_label(std::string_view line) {
   return trimmed(line.substr(kWord.size())).starts_with(":");
 }
 
+// `stemsize=0.2`, `dlength: 13`, `view = {…}`, or `n=1; delta=22.5`: lines
+// that only L-system Explorer writes (lsolid's own notation refuses the
+// first three as unknown settings and has no `;` between settings).
+bool is_lowclouds_setting(std::string_view line) {
+  std::size_t i = 0;
+  while (i < line.size() &&
+         (std::isalnum(static_cast<unsigned char>(line[i])) != 0 ||
+          line[i] == '_')) {
+    ++i;
+  }
+  const std::string_view word = line.substr(0, i);
+  const std::string_view rest = trimmed(line.substr(i));
+  if (word.empty() || rest.empty()) return false;
+  const bool assigns = rest.front() == '=' && !rest.starts_with("==");
+  if (rest.front() == ':' || assigns) {
+    if (word == "stemsize" || word == "dlength" || word == "Dlength")
+      return true;
+    if (word == "view" && assigns) return true;
+  }
+  if (!assigns || rest.find("->") != std::string_view::npos ||
+      rest.find('\xE2') != std::string_view::npos) {
+    return false;
+  }
+  // `a = 1; b = 2`: a `;` followed by another assignment.
+  const std::size_t semicolon = rest.find(';');
+  if (semicolon == std::string_view::npos) return false;
+  const std::string_view next = trimmed(rest.substr(semicolon + 1));
+  std::size_t j = 0;
+  while (j < next.size() &&
+         (std::isalnum(static_cast<unsigned char>(next[j])) != 0 ||
+          next[j] == '_')) {
+    ++j;
+  }
+  const std::string_view after = trimmed(next.substr(j));
+  return j > 0 && after.starts_with("=") && !after.starts_with("==");
+}
+
 bool ends_with(std::string_view name, std::string_view extension) {
   if (name.size() < extension.size()) return false;
   return std::equal(extension.begin(), extension.end(),
@@ -105,6 +143,8 @@ Dialect detect_dialect(std::string_view text, std::string_view file_name) {
   bool production = false;
   bool in_comment_block = false;
   bool lsystem = false;
+  bool lowclouds = false;
+  bool axiom_seen = false;
   for_each_line(text, [&](std::string_view line) {
     if (line.empty()) return true;
     if (first && line.front() == ';') return true;
@@ -133,14 +173,19 @@ Dialect detect_dialect(std::string_view text, std::string_view file_name) {
     }
     if (line.front() != '#') first = false;
     lsystem = lsystem || is_lsystem_label(line);
+    lowclouds = lowclouds || (!axiom_seen && is_lowclouds_setting(line));
+    axiom_seen =
+        axiom_seen || line.starts_with("axiom") || line.starts_with("Axiom");
     axiom = axiom || line.starts_with("Axiom:") || line.starts_with("Axiom :");
     production = production || line.starts_with("production:") ||
                  line.starts_with("production :");
-    return !(axiom && production) && numbers < 2 && !lsystem;
+    return !(axiom && production) && numbers < 2 && !lowclouds &&
+           !(lsystem && !named_ls);
   });
   if (fractint) return Dialect::Fractint;
   if (numbers >= 2) return Dialect::Lparser;
   if (lsystem && !named_ls) return Dialect::Cpfg;
+  if (lowclouds) return Dialect::Lowclouds;
   if (axiom && production && !named_ls && !named_l) return Dialect::Lpy;
   return Dialect::Ls;
 }

@@ -266,6 +266,22 @@ class Compiler {
     return false;
   }
 
+  // mathjs's operator words (`a and not b`), as whole words only, so that
+  // a parameter named `order` is not `or` and `der`.
+  bool accept_word(std::string_view word) {
+    if (!scope_.mathjs) return false;
+    skip_space();
+    if (!text_.substr(pos_).starts_with(word)) return false;
+    const std::size_t end = pos_ + word.size();
+    if (end < text_.size() &&
+        (std::isalnum(static_cast<unsigned char>(text_[end])) != 0 ||
+         text_[end] == '_')) {
+      return false;
+    }
+    pos_ = end;
+    return true;
+  }
+
   int add(Op op, std::size_t offset, int a = -1, int b = -1) {
     if (nodes_.size() >= kMaxNodes) fail(offset, "expression is too long");
     nodes_.push_back(Node{Instruction{.op = op, .offset = offset}, a, b});
@@ -322,7 +338,7 @@ class Compiler {
     int left = parse_and();
     for (;;) {
       const std::size_t at = (skip_space(), pos_);
-      if (!accept("||")) return left;
+      if (!accept("||") && !accept_word("or")) return left;
       left = binary(Op::Or, at, left, parse_and());
     }
   }
@@ -331,7 +347,7 @@ class Compiler {
     int left = parse_comparison();
     for (;;) {
       const std::size_t at = (skip_space(), pos_);
-      if (!accept("&&")) return left;
+      if (!accept("&&") && !accept_word("and")) return left;
       left = binary(Op::And, at, left, parse_comparison());
     }
   }
@@ -390,7 +406,7 @@ class Compiler {
         left = binary(Op::Multiply, at, left, parse_unary());
       } else if (accept("/")) {
         left = binary(Op::Divide, at, left, parse_unary());
-      } else if (scope_.cpfg && accept("%")) {
+      } else if ((scope_.cpfg && accept("%")) || accept_word("mod")) {
         left = binary(Op::Modulo, at, left, parse_unary());
       } else {
         return left;
@@ -424,6 +440,7 @@ class Compiler {
       ++pos_;
       return fold(add(Op::Not, at, parse_unary()));
     }
+    if (accept_word("not")) return fold(add(Op::Not, at, parse_unary()));
     return parse_power();
   }
 
@@ -571,8 +588,35 @@ class Compiler {
     return node;
   }
 
+  // mathjs's random(), random(max), random(min, max): uniform numbers from
+  // the generator of cpfg's ran, so that a file gives the same model on
+  // every run (mathjs's own are never the same twice).
+  int parse_random(std::size_t at) {
+    accept("(");
+    std::vector<int> args;
+    if (!accept(")")) {
+      for (;;) {
+        args.push_back(parse_conditional());
+        if (accept(")")) break;
+        if (!accept(",")) fail(pos_, "expected ',' or ')'");
+      }
+    }
+    if (args.size() > 2) {
+      fail(at, "'random' takes at most 2 arguments, " +
+                   std::to_string(args.size()) + " given");
+    }
+    if (args.empty()) {
+      args.push_back(add(Op::Constant, at));
+      nodes_.back().instruction.value = 1.0;
+    }
+    if (args.size() == 1) return add(Op::Ran, at, args[0]);
+    const int span = binary(Op::Subtract, at, args[1], args[0]);
+    return binary(Op::Add, at, args[0], add(Op::Ran, at, span));
+  }
+
   int parse_call(const std::string& name, std::size_t at) {
     if (scope_.cpfg && name == "func") return parse_func(at);
+    if (scope_.mathjs && name == "random") return parse_random(at);
     const Function* function = nullptr;
     for (const Function& f : kFunctions) {
       if (f.name == name) function = &f;
@@ -730,7 +774,20 @@ class Compiler {
   }
 
   void expect_semicolon() {
-    if (!accept(";")) fail(pos_, "expected ';' after the statement");
+    if (accept(";")) return;
+    if (scope_.mathjs && (pos_ >= text_.size() || text_[pos_] == '}' ||
+                          line_ended_before(pos_))) {
+      return;  // mathjs ends a statement at `;`, a line's end or the block's
+    }
+    fail(pos_, "expected ';' after the statement");
+  }
+
+  // True when a line break stands between `at` and the text before it.
+  bool line_ended_before(std::size_t at) const {
+    while (at > 0 && std::isspace(static_cast<unsigned char>(text_[at - 1]))) {
+      if (text_[--at] == '\n') return true;
+    }
+    return false;
   }
 
   std::size_t jump(std::vector<Instruction>& code, Op op) {

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #include "lsys/grammar.hpp"
 
+#include <algorithm>
+
 namespace lsys {
 
 void Successor::push_back(SymbolId symbol, std::vector<Expression> parameters,
@@ -43,6 +45,15 @@ void Successor::instantiate(std::span<const double> slots,
   for (std::size_t i = 0; i < expressions_.size(); ++i) {
     out[i] = expressions_[i].evaluate(slots, variables);
   }
+}
+
+Variables initial_variables(const Grammar& grammar) {
+  Variables variables;
+  variables.globals.assign(grammar.globals.size(), 0.0);
+  std::copy_n(grammar.initial_globals.begin(),
+              std::min(grammar.initial_globals.size(), grammar.globals.size()),
+              variables.globals.begin());
+  return variables;
 }
 
 }  // namespace lsys

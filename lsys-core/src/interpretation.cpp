@@ -321,8 +321,10 @@ class Interpreter {
       case TurtleCommand::Widen:
         if (!params.empty()) {
           state_.width = std::max(0.0, params[0] * settings_.width_scale);
-        } else if (settings_.width_increment) {
-          state_.width += *settings_.width_increment * settings_.width_scale;
+        } else if (settings_.widen_increment || settings_.width_increment) {
+          state_.width += settings_.widen_increment.value_or(
+                              settings_.width_increment.value_or(0.0)) *
+                          settings_.width_scale;
         } else {
           if (settings_.width_factor > 0.0)
             state_.width /= settings_.width_factor;
@@ -595,7 +597,7 @@ ParseError nothing_drawn_error(const Grammar& grammar,
 Skeleton interpret_string(const Grammar& grammar, const ModuleString& modules,
                           const InterpretOptions& options) {
   Interpreter interpreter(grammar, options);
-  Variables variables{.globals = std::vector<double>(grammar.globals.size())};
+  Variables variables = initial_variables(grammar);
   interpreter.use_variables(&variables);
   interpreter.run(modules);
   return interpreter.finish();

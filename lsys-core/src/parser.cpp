@@ -46,6 +46,8 @@ Grammar parse_grammar(std::shared_ptr<const SourceFile> source,
       return dialects::read_lpy(std::move(source), options);
     case Dialect::Cpfg:
       return dialects::read_cpfg(std::move(source), options);
+    case Dialect::Lowclouds:
+      return dialects::read_lowclouds(std::move(source), options);
     case Dialect::Ls:
       break;
   }

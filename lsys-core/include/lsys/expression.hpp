@@ -44,6 +44,10 @@ struct ExpressionScope {
   /// `sign`, `fabs`, and the random `ran`, `nran`, `bran`, `biran`,
   /// `srand`.
   bool cpfg = false;
+  /// L-system Explorer's expressions, which are mathjs's: the words `and`,
+  /// `or`, `not` and `mod` beside `&&`, `||`, `!` and `%`, and statements
+  /// whose last `;` may be left out (`{v = i}`).
+  bool mathjs = false;
 };
 
 /// What cpfg's expressions share while deriving: its global variables and

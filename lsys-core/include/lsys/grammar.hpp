@@ -163,6 +163,9 @@ struct Grammar {
   /// cpfg's global variables, by slot, and its blocks of statements: once
   /// before the axiom, before and after each step, after the last.
   std::vector<std::string> globals;
+  /// The values the first globals start at (L-system Explorer's variables,
+  /// `zpos = 0`); the others start at 0.
+  std::vector<double> initial_globals;
   std::optional<Expression> start;
   std::optional<Expression> start_each;
   std::optional<Expression> end_each;
@@ -171,5 +174,9 @@ struct Grammar {
   /// numbers: the string is then rewritten step by step, in order.
   bool uses_variables = false;
 };
+
+/// The global variables as a derivation starts them: each at its initial
+/// value, or 0.
+[[nodiscard]] Variables initial_variables(const Grammar& grammar);
 
 }  // namespace lsys

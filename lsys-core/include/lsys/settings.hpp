@@ -40,6 +40,9 @@ struct Settings {
   double initial_width = 0.1;
   /// Bare `!` subtracts this when set (cpfg's `line width increment`)...
   std::optional<double> width_increment;
+  /// Bare `#` adds this when set (L-system Explorer adds 1 but takes 0.1
+  /// away), else width_increment...
+  std::optional<double> widen_increment;
   /// ...and otherwise multiplies by this (Houdini's thickness scale; the
   /// default is Honda's and da Vinci's 1/√2 ≈ 0.707).
   double width_factor = 0.707;

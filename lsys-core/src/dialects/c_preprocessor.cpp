@@ -49,7 +49,7 @@ struct Macro {
 
 // Replaces comments by blanks, keeping line breaks and offsets; string
 // literals (printf formats) are left alone.
-std::string blank_comments(const SourceFile& source) {
+std::string blank_comments(const SourceFile& source, bool line_comments) {
   std::string out = source.text();
   for (std::size_t i = 0; i < out.size(); ++i) {
     if (out[i] == '"') {
@@ -59,7 +59,7 @@ std::string blank_comments(const SourceFile& source) {
       continue;
     }
     if (out[i] != '/' || i + 1 == out.size()) continue;
-    if (out[i + 1] == '/') {
+    if (out[i + 1] == '/' && line_comments) {
       for (; i < out.size() && out[i] != '\n'; ++i) out[i] = ' ';
       continue;
     }
@@ -72,7 +72,9 @@ std::string blank_comments(const SourceFile& source) {
 class Preprocessor {
  public:
   Preprocessor(const SourceFile& source, const PreprocessOptions& options)
-      : source_(source), options_(options), clean_(blank_comments(source)) {
+      : source_(source),
+        options_(options),
+        clean_(blank_comments(source, options.line_comments)) {
     for (const std::string& d : options.defines) {
       overridden_.insert(d.substr(0, d.find('=')));
     }
@@ -151,8 +153,13 @@ class Preprocessor {
         i = end + 1;
         continue;
       }
-      if (!directive && options_.tab_continues && end + 1 < clean_.size() &&
-          ((clean_[end + 1] == '\t' && !is_directive(end + 1)) ||
+      const bool continues =
+          end + 1 < clean_.size() &&
+          ((options_.tab_continues && clean_[end + 1] == '\t') ||
+           (options_.indent_continues &&
+            (clean_[end + 1] == '\t' || clean_[end + 1] == ' ')));
+      if (!directive && (options_.tab_continues || options_.indent_continues) &&
+          ((continues && !is_directive(end + 1)) ||
            opens_statements(begin, end))) {
         i = end + 1;
         continue;
@@ -166,8 +173,9 @@ class Preprocessor {
   // `Start:` block and its kin. Braces elsewhere are polygons.
   bool opens_statements(std::size_t begin, std::size_t end) const {
     const std::string_view line(clean_.data() + begin, end - begin);
-    std::size_t stop = line.find("-->");
+    std::size_t stop = line.find("->");  // and `-->`, which holds it
     if (stop == std::string_view::npos) stop = line.size();
+    if (stop > 0 && line[stop - 1] == '-') --stop;
     const std::size_t colon = line.find(':');
     const std::size_t brace = line.find('{');
     if (colon == std::string_view::npos || brace == std::string_view::npos ||

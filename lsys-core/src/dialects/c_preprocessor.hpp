@@ -19,12 +19,18 @@ struct PreprocessOptions {
   /// A line break followed by a tab continues the line, as cpfg's lexer
   /// reads its files; the break becomes a blank.
   bool tab_continues = false;
+  /// A line break followed by a blank or a tab continues the line, as
+  /// L-System Explorer reads its files; statement blocks span lines.
+  bool indent_continues = false;
   /// Numeric macros stay `#define` constants (the `.l`); without it every
   /// macro expands as text (the `.v`, which knows no constants).
   bool keep_constants = true;
   /// Macros defined before the text, as `-D` gives them (cpfg passes the
   /// names of a function set this way); always expanded.
   std::vector<std::pair<std::string, std::string>> predefined;
+  /// `//` starts a comment, as in C; L-system Explorer's preprocessor
+  /// keeps it, as two rolls (`F//`).
+  bool line_comments = true;
 };
 
 /// Runs the C preprocessor that cpfg runs on its `.l` and `.v` files

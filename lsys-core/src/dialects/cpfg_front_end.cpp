@@ -25,42 +25,26 @@ namespace {
 // one-pixel line prints as lsolid's line drawings do.
 constexpr double kStepsPerPixel = 0.1;
 
-const std::vector<SymbolCommand> kSymbols = {
-    {"F", TurtleCommand::Draw, std::nullopt, 1},
-    {"f", TurtleCommand::Move, std::nullopt, 1},
-    {"G", TurtleCommand::DrawNoVertex, std::nullopt, 1},
-    {"g", TurtleCommand::MoveNoVertex, std::nullopt, 1},
-    {"+", TurtleCommand::TurnLeft, std::nullopt, 1},
-    {"-", TurtleCommand::TurnRight, std::nullopt, 1},
-    {"&", TurtleCommand::PitchDown, std::nullopt, 1},
-    {"^", TurtleCommand::PitchUp, std::nullopt, 1},
-    {"/", TurtleCommand::RollRight, std::nullopt, 1},
-    {"\\", TurtleCommand::RollLeft, std::nullopt, 1},
-    {"|", TurtleCommand::TurnAround, std::nullopt, 0},
-    {"@v", TurtleCommand::RollToVertical, std::nullopt, 0},
-    {"[", TurtleCommand::Push, std::nullopt, 0},
-    {"]", TurtleCommand::Pop, std::nullopt, 0},
-    {"{", TurtleCommand::PolygonBegin, std::nullopt, 0},
-    {".", TurtleCommand::PolygonVertex, std::nullopt, 0},
-    {"}", TurtleCommand::PolygonEnd, std::nullopt, 0},
-    {"!", TurtleCommand::Width, std::nullopt, 1},
-    {"#", TurtleCommand::Widen, std::nullopt, 1},
-    {";", TurtleCommand::ColorNext, std::nullopt, 1},
-    {",", TurtleCommand::ColorPrevious, std::nullopt, 1},
-    {"%", TurtleCommand::Cut, std::nullopt, 0},
-    {"_", TurtleCommand::ElasticityChange, std::nullopt, 1},
-    // The end of a sub-L-system (whose call `?` is refused); no drawing.
-    {"$", TurtleCommand::None, std::nullopt, std::nullopt},
-    // Cylinder sides and contours, back-side colours, twist and texture:
-    // about rendering, nothing to print.
-    {"@!", TurtleCommand::None, std::nullopt, std::nullopt},
-    {"@#", TurtleCommand::None, std::nullopt, std::nullopt},
-    {"@;", TurtleCommand::None, std::nullopt, std::nullopt},
-    {"@,", TurtleCommand::None, std::nullopt, std::nullopt},
-    {"@Tf", TurtleCommand::None, std::nullopt, std::nullopt},
-    {"@Tp", TurtleCommand::None, std::nullopt, std::nullopt},
-    {"@Tx", TurtleCommand::None, std::nullopt, std::nullopt},
-};
+const std::vector<SymbolCommand> kSymbols = [] {
+  std::vector<SymbolCommand> symbols = cpfg_turtle_symbols();
+  symbols.insert(
+      symbols.end(),
+      {
+          {"_", TurtleCommand::ElasticityChange, std::nullopt, 1},
+          // The end of a sub-L-system (whose call `?` is refused); no drawing.
+          {"$", TurtleCommand::None, std::nullopt, std::nullopt},
+          // Cylinder sides and contours, back-side colours, twist and texture:
+          // about rendering, nothing to print.
+          {"@!", TurtleCommand::None, std::nullopt, std::nullopt},
+          {"@#", TurtleCommand::None, std::nullopt, std::nullopt},
+          {"@;", TurtleCommand::None, std::nullopt, std::nullopt},
+          {"@,", TurtleCommand::None, std::nullopt, std::nullopt},
+          {"@Tf", TurtleCommand::None, std::nullopt, std::nullopt},
+          {"@Tp", TurtleCommand::None, std::nullopt, std::nullopt},
+          {"@Tx", TurtleCommand::None, std::nullopt, std::nullopt},
+      });
+  return symbols;
+}();
 
 const std::vector<RefusedName> kRefused = {
     {"@O", "a sphere"},
@@ -144,26 +128,6 @@ Draft notation(const CpfgView& view) {
   return draft;
 }
 
-// `{(1)` to `{(4)` start generalized cylinders in cpfg, not polygons.
-void refuse_cylinder_braces(const Grammar& grammar) {
-  const auto check = [&](const Successor& successor) {
-    for (std::size_t i = 0; i < successor.size(); ++i) {
-      if (grammar.commands[successor.symbols()[i]] ==
-              TurtleCommand::PolygonBegin &&
-          !successor.parameters(i).empty()) {
-        throw error_at(*grammar.source, successor.offset(i),
-                       "cpfg's '{(n)' (a generalized cylinder) is not "
-                       "supported; write '{' for a polygon");
-      }
-    }
-  };
-  check(grammar.axiom);
-  for (const auto* list : {&grammar.productions, &grammar.decompositions,
-                           &grammar.homomorphisms}) {
-    for (const Production& p : *list) check(p.successor);
-  }
-}
-
 // cpfg makes an L-system stochastic only with `seed:`; without it the
 // probabilities are ignored, with a warning (lsys_input.y).
 void drop_probabilities_without_seed(Grammar& grammar) {
@@ -244,9 +208,58 @@ Grammar read_cpfg(std::shared_ptr<const SourceFile> source,
   }
   Grammar grammar = read_ls_lines(std::move(preprocessed), options,
                                   std::move(draft), LsVariant::Cpfg);
-  refuse_cylinder_braces(grammar);
+  refuse_parameterised_braces(
+      grammar,
+      "cpfg's '{(n)' (a generalized cylinder) is not supported; write '{' "
+      "for a polygon");
   drop_probabilities_without_seed(grammar);
   return grammar;
+}
+
+std::vector<SymbolCommand> cpfg_turtle_symbols() {
+  return {
+      {"F", TurtleCommand::Draw, std::nullopt, 1},
+      {"f", TurtleCommand::Move, std::nullopt, 1},
+      {"G", TurtleCommand::DrawNoVertex, std::nullopt, 1},
+      {"g", TurtleCommand::MoveNoVertex, std::nullopt, 1},
+      {"+", TurtleCommand::TurnLeft, std::nullopt, 1},
+      {"-", TurtleCommand::TurnRight, std::nullopt, 1},
+      {"&", TurtleCommand::PitchDown, std::nullopt, 1},
+      {"^", TurtleCommand::PitchUp, std::nullopt, 1},
+      {"/", TurtleCommand::RollRight, std::nullopt, 1},
+      {"\\", TurtleCommand::RollLeft, std::nullopt, 1},
+      {"|", TurtleCommand::TurnAround, std::nullopt, 0},
+      {"@v", TurtleCommand::RollToVertical, std::nullopt, 0},
+      {"[", TurtleCommand::Push, std::nullopt, 0},
+      {"]", TurtleCommand::Pop, std::nullopt, 0},
+      {"{", TurtleCommand::PolygonBegin, std::nullopt, 0},
+      {".", TurtleCommand::PolygonVertex, std::nullopt, 0},
+      {"}", TurtleCommand::PolygonEnd, std::nullopt, 0},
+      {"!", TurtleCommand::Width, std::nullopt, 1},
+      {"#", TurtleCommand::Widen, std::nullopt, 1},
+      {";", TurtleCommand::ColorNext, std::nullopt, 1},
+      {",", TurtleCommand::ColorPrevious, std::nullopt, 1},
+      {"%", TurtleCommand::Cut, std::nullopt, 0},
+  };
+}
+
+void refuse_parameterised_braces(const Grammar& grammar,
+                                 std::string_view message) {
+  const auto check = [&](const Successor& successor) {
+    for (std::size_t i = 0; i < successor.size(); ++i) {
+      if (grammar.commands[successor.symbols()[i]] ==
+              TurtleCommand::PolygonBegin &&
+          !successor.parameters(i).empty()) {
+        throw error_at(*grammar.source, successor.offset(i),
+                       std::string(message));
+      }
+    }
+  };
+  check(grammar.axiom);
+  for (const auto* list : {&grammar.productions, &grammar.decompositions,
+                           &grammar.homomorphisms}) {
+    for (const Production& p : *list) check(p.successor);
+  }
 }
 
 }  // namespace lsys::dialects

@@ -121,6 +121,12 @@ struct Syntax {
   /// cpfg's expressions and statements: `%`, `?:`, random functions,
   /// blocks `{ … }` around a condition, global variables.
   bool cpfg_statements = false;
+  /// L-system Explorer's mathjs expressions: `and`, `or`, `not`, `mod`,
+  /// and statements without a last `;` (ExpressionScope::mathjs).
+  bool mathjs = false;
+  /// Only `p1:`, `P12:` are labels (L-system Explorer): `P : * → …` is the
+  /// module P with the condition "always".
+  bool numbered_labels = false;
 };
 
 /// When a block of cpfg's statements runs.
@@ -154,6 +160,10 @@ struct Draft {
   std::map<std::string, double> constants;
   /// Modules refused wherever they appear.
   std::vector<RefusedName> refused;
+  /// Names among `defines` that statements assign (L-system Explorer's
+  /// variables): global variables that start at their value, not
+  /// constants.
+  std::unordered_set<std::string> variables;
   /// cpfg's blocks of statements, in file order.
   std::vector<StatementBlock> blocks;
   /// cpfg's functions for `func(id, x)`, from the view file.

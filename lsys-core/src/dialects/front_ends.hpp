@@ -3,6 +3,7 @@
 #pragma once
 
 #include <memory>
+#include <string_view>
 
 #include "dialects/draft.hpp"
 #include "lsys/grammar.hpp"
@@ -20,6 +21,9 @@ namespace lsys::dialects {
 enum class LsVariant {
   Ls,    ///< `#` alone is a comment
   Cpfg,  ///< `#` is always a module; cpfg's blocks are refused by name
+  /// As Cpfg, and before the axiom `name = value` lines (several to a line,
+  /// separated by `;`) set L-system Explorer's settings and variables.
+  Lowclouds,
 };
 
 /// Reads a text by the line rules of lsolid's notation, with a notation's
@@ -35,6 +39,22 @@ enum class LsVariant {
 /// @throws ParseError as read_ls, in either file.
 [[nodiscard]] Grammar read_cpfg(std::shared_ptr<const SourceFile> source,
                                 const ParseOptions& options);
+
+/// Reads the files of Lowclouds' L-system Explorer
+/// (docs/dialects/lowclouds.md).
+/// @throws ParseError as read_ls.
+[[nodiscard]] Grammar read_lowclouds(std::shared_ptr<const SourceFile> source,
+                                     const ParseOptions& options);
+
+/// cpfg's turtle symbols, which L-system Explorer keeps: `F f G g + - & ^
+/// / \ | @v [ ] { . } ! # ; , %`, each reading one parameter at most.
+[[nodiscard]] std::vector<SymbolCommand> cpfg_turtle_symbols();
+
+/// Refuses `{(n)` wherever a successor or the axiom holds it: cpfg and
+/// L-system Explorer start paths and cylinders with it, not polygons.
+/// @throws ParseError at the first, with `message`.
+void refuse_parameterised_braces(const Grammar& grammar,
+                                 std::string_view message);
 
 /// Reads Laurens Lapré's Lparser files (docs/dialects/lparser.md).
 /// @throws ParseError as read_ls.

@@ -120,7 +120,8 @@ class GrammarBuilder : TextScan {
     try {
       (void)parse_expression(source_, r.begin, r.end,
                              ExpressionScope{.constants = &grammar_.constants,
-                                             .radians = draft_.syntax.radians});
+                                             .radians = draft_.syntax.radians,
+                                             .mathjs = draft_.syntax.mathjs});
       return true;
     } catch (const ParseError&) {
       return false;
@@ -136,6 +137,7 @@ class GrammarBuilder : TextScan {
   // declares cannot be one predecessor, so it is always a label.
   Range strip_label(Range lhs) const {
     lhs = trim(lhs);
+    if (draft_.syntax.numbered_labels) return strip_numbered_label(lhs);
     if (draft_.syntax.cpfg_statements) return lhs;  // cpfg has no labels
     const std::size_t colon = find_top(lhs, ":");
     if (colon == std::string::npos) return lhs;
@@ -157,6 +159,20 @@ class GrammarBuilder : TextScan {
                std::string(view(rest)) + " \u2192 \u2026' for a condition");
     }
     return rest;
+  }
+
+  // `p1:` or `P12:` before the production; nothing else is a label.
+  Range strip_numbered_label(Range lhs) const {
+    const std::size_t colon = find_top(lhs, ":");
+    if (colon == std::string::npos) return lhs;
+    const std::string_view label = view(trim(Range{lhs.begin, colon}));
+    if (label.size() < 2 || (label[0] != 'p' && label[0] != 'P') ||
+        !std::all_of(label.begin() + 1, label.end(), [](char c) {
+          return std::isdigit(static_cast<unsigned char>(c)) != 0;
+        })) {
+      return lhs;
+    }
+    return trim(Range{colon + 1, lhs.end});
   }
 
   struct Lhs {
@@ -283,7 +299,8 @@ class GrammarBuilder : TextScan {
           parse_expression(source, equals + 1, define.size(),
                            ExpressionScope{.constants = &grammar_.constants,
                                            .used_constants = &used_constants_,
-                                           .radians = draft_.syntax.radians});
+                                           .radians = draft_.syntax.radians,
+                                           .mathjs = draft_.syntax.mathjs});
       grammar_.constants[name] = value.constant_value();
       given.insert(name);
       given_defines_.push_back(name);
@@ -299,6 +316,11 @@ class GrammarBuilder : TextScan {
       seen.emplace(name, name_range.begin);
       file_defines_.insert(name);
       if (given.count(name) != 0) continue;  // --define wins
+      if (draft_.variables.count(name) != 0) {
+        grammar_.globals.push_back(name);
+        grammar_.initial_globals.push_back(constant(value));
+        continue;
+      }
       grammar_.constants[name] = constant(value);
     }
   }
@@ -307,7 +329,8 @@ class GrammarBuilder : TextScan {
     return parse_expression(source_, r.begin, r.end,
                             ExpressionScope{.constants = &grammar_.constants,
                                             .used_constants = &used_constants_,
-                                            .radians = draft_.syntax.radians})
+                                            .radians = draft_.syntax.radians,
+                                            .mathjs = draft_.syntax.mathjs})
         .constant_value();
   }
 
@@ -618,7 +641,8 @@ class GrammarBuilder : TextScan {
         cpfg_scope(ExpressionScope{.parameters = slots,
                                    .constants = &grammar_.constants,
                                    .used_constants = &used_constants_,
-                                   .radians = draft_.syntax.radians},
+                                   .radians = draft_.syntax.radians,
+                                   .mathjs = draft_.syntax.mathjs},
                    &locals);
     if (lhs.before) {
       p.before =
@@ -753,7 +777,8 @@ class GrammarBuilder : TextScan {
     const ExpressionScope scope =
         cpfg_scope(ExpressionScope{.constants = &grammar_.constants,
                                    .used_constants = &used_constants_,
-                                   .radians = draft_.syntax.radians},
+                                   .radians = draft_.syntax.radians,
+                                   .mathjs = draft_.syntax.mathjs},
                    nullptr);
     std::vector<Range> ranges{*draft_.axiom};
     ranges.insert(ranges.end(), draft_.axiom_more.begin(),

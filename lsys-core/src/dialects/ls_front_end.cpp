@@ -147,6 +147,7 @@ class LsReader : TextScan {
 
   Grammar run() {
     sort_lines();
+    if (variant_ == LsVariant::Lowclouds) finish_lowclouds();
     return build_grammar(*this, std::move(draft_), options_);
   }
 
@@ -468,7 +469,8 @@ class LsReader : TextScan {
 
   // Returns true if the line was (part of) a production.
   bool sort_line(Range line, bool indented, bool after_production) {
-    if (variant_ == LsVariant::Cpfg) {
+    if (variant_ == LsVariant::Lowclouds && lowclouds_line(line)) return false;
+    if (variant_ != LsVariant::Ls) {
       refuse_cpfg_only(line);
       if (cpfg_block(line)) return false;
     }
@@ -647,6 +649,164 @@ class LsReader : TextScan {
     }
   }
 
+  // L-system Explorer (its lsystem.js): before the axiom, `name = value`
+  // lines set variables, several to a line separated by `;`, and
+  // `stemsize: 0.2`, `dlength: 13` settings of its own; one `lsystem:`
+  // label. True if the line was one of these.
+  bool lowclouds_line(Range line) {
+    if (const auto end = match_words(line.begin, line.end, "lsystem")) {
+      std::size_t pos = *end;
+      while (pos < line.end && is_blank(text_[pos])) ++pos;
+      if (pos < line.end && text_[pos] == ':') {
+        if (seen_lsystem_label_) {
+          fail(line.begin,
+               "a second 'lsystem:': sub-L-systems are not supported");
+        }
+        seen_lsystem_label_ = true;
+        return true;
+      }
+    }
+    const bool before_axiom = !draft_.axiom && !has_axiom_setting_;
+    for (const auto& [word, key] :
+         {std::pair{std::string_view("stemsize"), Key::Width},
+          std::pair{std::string_view("dlength"), Key::DerivationLength},
+          std::pair{std::string_view("length"), Key::DerivationLength}}) {
+      const auto end = match_words(line.begin, line.end, word);
+      if (!end) continue;
+      std::size_t pos = *end;
+      while (pos < line.end && is_blank(text_[pos])) ++pos;
+      if (pos >= line.end || text_[pos] != ':') continue;
+      draft_.settings.push_back(SettingText{
+          key, {}, Range{line.begin, *end}, trim(Range{pos + 1, line.end})});
+      return true;
+    }
+    std::size_t i = line.begin;
+    while (i < line.end && is_word_char(text_[i])) ++i;
+    std::size_t equals = i;
+    while (equals < line.end && is_blank(text_[equals])) ++equals;
+    const bool assignment = i > line.begin && equals < line.end &&
+                            text_[equals] == '=' &&
+                            text_.substr(equals, 2) != "==";
+    if (!assignment || find_arrow(line, false)) return false;
+    if (!before_axiom) {
+      fail(line.begin,
+           "a variable set after the axiom (L-system Explorer ignores it); "
+           "set it before 'axiom:'");
+    }
+    for (const Range& piece : lowclouds_assignments(line)) {
+      lowclouds_assignment(piece);
+    }
+    return true;
+  }
+
+  // `n=1; delta=22.5; stemsize=0.1`, and `n=6,delta=60` as makers write
+  // it: cut at `;`, and at a `,` before another `name =`.
+  std::vector<Range> lowclouds_assignments(Range line) const {
+    std::vector<Range> pieces;
+    int depth = 0;
+    std::size_t start = line.begin;
+    for (std::size_t i = line.begin; i < line.end; ++i) {
+      const char c = text_[i];
+      if (c == '(' || c == '[' || c == '{') ++depth;
+      if (c == ')' || c == ']' || c == '}') --depth;
+      if (depth != 0 || (c != ';' && c != ',')) continue;
+      if (c == ',' &&
+          !starts_with_name_and_separator(trim(Range{i + 1, line.end}))) {
+        continue;
+      }
+      pieces.push_back(trim(Range{start, i}));
+      start = i + 1;
+    }
+    pieces.push_back(trim(Range{start, line.end}));
+    std::erase_if(pieces, [](const Range& r) { return r.empty(); });
+    return pieces;
+  }
+
+  void lowclouds_assignment(Range piece) {
+    const std::size_t equals = find_equals(piece);
+    const Range name = trim(Range{piece.begin, equals});
+    const Range value = trim(Range{equals + 1, piece.end});
+    const std::string_view word = view(name);
+    if (equals == std::string::npos || !is_identifier(word)) {
+      fail(piece.begin, "expected 'name = value'");
+    }
+    if (word == "view") return;  // the camera: nothing to print
+    if (value.empty()) fail(equals, "expected a value after '='");
+    const char first = text_[value.begin];
+    if (first == '{' || first == '[' || first == '\'' || first == '"' ||
+        match_words(value.begin, value.end, "function")) {
+      fail(value.begin,
+           "L-system Explorer's arrays, objects, strings and functions are "
+           "not supported; a variable takes a number");
+    }
+    static constexpr std::array<std::pair<std::string_view, Key>, 3> kKeys{{
+        {"delta", Key::Angle},
+        {"stemsize", Key::Width},
+        {"step", Key::Step},
+    }};
+    // The settings are variables as well, which expressions may read
+    // (`+(delta/2)`).
+    for (const auto& [setting, key] : kKeys) {
+      if (word == setting) {
+        draft_.settings.push_back(SettingText{key, {}, name, value});
+      }
+    }
+    if (word == "n") {
+      // `n` is the derivation length only where no `derivation length:`
+      // gives one.
+      lowclouds_n_ = SettingText{Key::DerivationLength, {}, name, value};
+    }
+    for (auto& [defined, defined_value] : draft_.defines) {
+      if (view(defined) == word) {  // set again: the last value holds
+        defined_value = value;
+        return;
+      }
+    }
+    draft_.defines.emplace_back(name, value);
+    lowclouds_variables_.push_back(name);
+  }
+
+  void finish_lowclouds() {
+    const bool has_length = std::any_of(
+        draft_.settings.begin(), draft_.settings.end(),
+        [](const SettingText& s) { return s.key == Key::DerivationLength; });
+    if (!has_length && lowclouds_n_) draft_.settings.push_back(*lowclouds_n_);
+    if (!has_length && !lowclouds_n_) {
+      draft_.warnings.emplace_back(
+          "no derivation length ('derivation length:', 'dlength:' or 'n = "
+          "…'): 1, as L-system Explorer takes");
+    }
+    // A variable that a production's or a block's statements assign is a
+    // global variable; the others are constants (`--define` sets them).
+    std::vector<Range> statements;
+    for (const ProductionText& p : draft_.productions) {
+      statements.push_back(p.lhs);
+    }
+    for (const StatementBlock& b : draft_.blocks) statements.push_back(b.text);
+    for (const Range& name : lowclouds_variables_) {
+      const std::string_view word = view(name);
+      const bool assigned =
+          std::any_of(statements.begin(), statements.end(),
+                      [&](Range r) { return assigns(r, word); });
+      if (assigned) draft_.variables.insert(std::string(word));
+    }
+  }
+
+  // True if `r` holds `word = …` (not `==`, `<=`, `>=`, `!=`).
+  bool assigns(Range r, std::string_view word) const {
+    for (std::size_t at = find_in(r, word); at != std::string::npos;
+         at = find_in(Range{at + 1, r.end}, word)) {
+      if (at > r.begin && is_word_char(text_[at - 1])) continue;
+      std::size_t i = at + word.size();
+      if (i < r.end && is_word_char(text_[i])) continue;
+      while (i < r.end && is_blank(text_[i])) ++i;
+      if (i < r.end && text_[i] == '=' && text_.substr(i, 2) != "==") {
+        return true;
+      }
+    }
+    return false;
+  }
+
   // True when a line starts with an ABOP label such as `p1:` or `p_2 :`
   // (while sorting lines, before names and constants are known).
   bool has_abop_label(Range line) const {
@@ -667,6 +827,9 @@ class LsReader : TextScan {
   Draft draft_;
   LsVariant variant_;
   Section section_ = Section::Productions;
+  bool seen_lsystem_label_ = false;
+  std::optional<SettingText> lowclouds_n_;
+  std::vector<Range> lowclouds_variables_;
   bool has_axiom_setting_ = false;
   bool after_axiom_ = false;      // the last line set or continued the axiom
   bool continues_axiom_ = false;  // this line is indented after it

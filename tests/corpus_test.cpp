@@ -59,6 +59,9 @@ TEST_P(Corpus, DerivesWhatItsSourceDrawsOrIsRefusedByName) {
     std::ostringstream counts;
     counts << "segments " << skeleton.segments.size() << ", polygons "
            << skeleton.polygons.size();
+    if (!skeleton.spheres.empty()) {
+      counts << ", spheres " << skeleton.spheres.size();
+    }
     EXPECT_EQ(counts.str(), e.expect);
   } catch (const lsys::ParseError& error) {
     ASSERT_TRUE(e.expect.starts_with("error: ")) << error.what();

@@ -343,6 +343,18 @@ class Interpreter {
       case TurtleCommand::SetElasticity:
         state_.elasticity = params[0];
         return;
+      case TurtleCommand::Sphere: {
+        const double diameter =
+            params.empty()
+                ? state_.width
+                : params[0] * settings_.sphere_diameter_per_parameter;
+        if (diameter > 0.0 && std::isfinite(diameter)) {
+          skeleton_.spheres.push_back(Sphere{state_.turtle.position(), diameter,
+                                             state_.color,
+                                             state_.last_segment});
+        }
+        return;
+      }
       case TurtleCommand::ElasticityChange:
         state_.elasticity =
             params.empty() ? state_.elasticity + settings_.elasticity_increment

@@ -11,8 +11,8 @@ namespace {
 // ABOP p. 209 and the cpfg manual for the single characters (cpfg's `#`
 // widens as its `!` narrows); `∧` and `−`
 // (U+2212) are how seed 000 and typeset ABOP print `^` and `-`; `@v`, `@Tp`,
-// `@Ts` are L-Py's and cpfg's spellings.
-constexpr std::array<std::pair<std::string_view, TurtleCommand>, 29> kNames{{
+// `@Ts` are L-Py's and cpfg's spellings, and so is the sphere `@O`.
+constexpr std::array<std::pair<std::string_view, TurtleCommand>, 30> kNames{{
     {"F", TurtleCommand::Draw},
     {"f", TurtleCommand::Move},
     {"G", TurtleCommand::DrawNoVertex},
@@ -42,6 +42,7 @@ constexpr std::array<std::pair<std::string_view, TurtleCommand>, 29> kNames{{
     {"@Tp", TurtleCommand::SetTropism},
     {"@Ts", TurtleCommand::SetElasticity},
     {"\u2019", TurtleCommand::ColorNext},
+    {"@O", TurtleCommand::Sphere},
 }};
 
 }  // namespace

@@ -51,9 +51,11 @@ void print_report(const SolidReport& r, bool united) {
                                r.repeated_segments),
              r.polygons);
   fmt::print(
-      "parts: {} tubes, {} junction hulls, {} joints, {} leaf plates; scale "
+      "parts: {} tubes, {} junction hulls, {} joints, {} leaf plates{}; scale "
       "{:.4g} mm per unit\n",
-      r.tubes, r.junctions, r.joints, r.plates, r.mm_per_unit);
+      r.tubes, r.junctions, r.joints, r.plates,
+      r.spheres == 0 ? std::string() : fmt::format(", {} spheres", r.spheres),
+      r.mm_per_unit);
   if (r.skipped_polygons > 0) {
     fmt::print("skipped: {} polygons without area or crossing themselves\n",
                r.skipped_polygons);
@@ -187,7 +189,8 @@ std::string json_report(const Solid& solid, const OverhangReport& over,
       "{{\"output\": {}, \"written\": {}, \"united\": {}, \"segments\": {}, "
       "\"repeated_segments\": {}, "
       "\"leaves\": {}, \"tubes\": {}, \"junction_hulls\": {}, \"joints\": {}, "
-      "\"leaf_plates\": {}, \"contacts\": {}, \"booleans\": {}, "
+      "\"leaf_plates\": {}, \"spheres\": {}, \"contacts\": {}, "
+      "\"booleans\": {}, "
       "\"mm_per_unit\": {}, "
       "\"base\": {}, \"lies_flat\": {}, \"profile\": {}, "
       "\"underside_cut_mm\": {}, "
@@ -202,7 +205,7 @@ std::string json_report(const Solid& solid, const OverhangReport& over,
       "\"volumes\": {}}}}}\n",
       json_string(output.string()), written, united, r.segments,
       r.repeated_segments, r.polygons, r.tubes, r.junctions, r.joints, r.plates,
-      r.union_stats.contacts, r.union_stats.booleans, r.mm_per_unit,
+      r.spheres, r.union_stats.contacts, r.union_stats.booleans, r.mm_per_unit,
       p.has_base ? fmt::format("{{\"radius_mm\": {}, \"thickness_mm\": {}}}",
                                p.base_radius_mm, p.base_thickness_mm)
                  : std::string("null"),

@@ -57,7 +57,22 @@ void write_json(const lsys::Skeleton& skeleton, const char* units,
     text += "], \"color\": " + std::to_string(polygon.color) + "}";
     out.flush_if_large();
   }
-  text += "]}\n";
+  text += "]";
+  if (!skeleton.spheres.empty()) {
+    text += ",\n\"spheres\": [";
+    for (std::size_t i = 0; i < skeleton.spheres.size(); ++i) {
+      const lsys::Sphere& ball = skeleton.spheres[i];
+      text += i == 0 ? "\n" : ",\n";
+      text += "{\"center\": ";
+      append_point(text, ball.center);
+      text += ", \"r\": ";
+      lsys::append_number(text, ball.diameter / 2.0);
+      text += ", \"color\": " + std::to_string(ball.color) + "}";
+      out.flush_if_large();
+    }
+    text += "]";
+  }
+  text += "}\n";
 }
 
 void write_summary(const lsys::Skeleton& skeleton, const char* units,
@@ -75,9 +90,16 @@ void write_summary(const lsys::Skeleton& skeleton, const char* units,
   for (const lsys::Polygon& polygon : skeleton.polygons) {
     for (const glm::dvec3& p : polygon.points) grow(p);
   }
+  for (const lsys::Sphere& ball : skeleton.spheres) {
+    grow(ball.center - glm::dvec3(ball.diameter / 2.0));
+    grow(ball.center + glm::dvec3(ball.diameter / 2.0));
+  }
   std::string& text = out.text();
   text += fmt::format("segments: {}\npolygons: {}\n", skeleton.segments.size(),
                       skeleton.polygons.size());
+  if (!skeleton.spheres.empty()) {
+    text += fmt::format("spheres: {}\n", skeleton.spheres.size());
+  }
   if (low.x > high.x) {
     text += "bounds: none (nothing is drawn)\n";
   } else {
@@ -111,10 +133,10 @@ void run_skeleton(const SkeletonCommand& command) {
   const PrintInput& p = command.print;
   const bool in_mm = p.wall || p.height || p.size || p.scale;
   // Nothing drawn cannot be scaled: bad input, placed, as for a build.
-  if (in_mm && skeleton.segments.empty() && skeleton.polygons.empty()) {
-    throw lsys::nothing_drawn_error(grammar, skeleton);
-  }
-  if (skeleton.segments.empty() && skeleton.polygons.empty()) {
+  const bool nothing = skeleton.segments.empty() && skeleton.polygons.empty() &&
+                       skeleton.spheres.empty();
+  if (in_mm && nothing) throw lsys::nothing_drawn_error(grammar, skeleton);
+  if (nothing) {
     std::fputs(
         "warning: nothing is drawn; modules without a turtle meaning draw "
         "nothing (map them with an alias block, e.g. 'aliases: Fl=F Fr=F')\n",

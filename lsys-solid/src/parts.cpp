@@ -100,6 +100,10 @@ double size_of(const lsys::Skeleton& skeleton) {
   for (const lsys::Polygon& polygon : skeleton.polygons) {
     for (const glm::dvec3& p : polygon.points) add(p);
   }
+  for (const lsys::Sphere& s : skeleton.spheres) {
+    add(s.center - glm::dvec3(s.diameter / 2.0));
+    add(s.center + glm::dvec3(s.diameter / 2.0));
+  }
   const glm::dvec3 extent = box.max - box.min;
   return std::max({1.0, extent.x, extent.y, extent.z});
 }
@@ -196,6 +200,16 @@ class PartBuilder {
                            joint.center.x, joint.center.y, joint.center.z),
                joint.color});
       ++set_.joints;
+    }
+    // `@O` balls, each its own part of its own colour (scale_to_print made
+    // them a wall across at least).
+    for (const lsys::Sphere& b : skeleton_.spheres) {
+      set_.parts.push_back(
+          Part{ball(b.center, b.diameter / 2.0, index++),
+               fmt::format("sphere at ({:.3f}, {:.3f}, {:.3f}) mm", b.center.x,
+                           b.center.y, b.center.z),
+               b.color});
+      ++set_.spheres;
     }
     return std::move(set_);
   }
@@ -966,10 +980,20 @@ class PartBuilder {
 
   // A UV sphere whose faces all lie farther than `radius` from the centre,
   // so that it encloses every cap of that radius at the centre.
+  // A joint: a sphere that encloses the corners of caps of `radius`.
   TriangleMesh sphere(const glm::dvec3& center, double radius,
                       std::size_t index) {
-    const double needed =
-        tube_corner_radius(radius, options_.tolerance_mm) * kJointMargin;
+    return ball(
+        center,
+        tube_corner_radius(radius, options_.tolerance_mm) * kJointMargin,
+        index);
+  }
+
+  // A UV sphere whose faces all lie `needed` or farther from the centre,
+  // as a tube's sides touch its circle; its turn by the golden angle per
+  // `index` keeps neighbours' seams apart.
+  TriangleMesh ball(const glm::dvec3& center, double needed,
+                    std::size_t index) {
     const int longitudes =
         std::max(8, tube_sides(needed, options_.tolerance_mm));
     const int latitudes = std::max(4, longitudes / 2);

@@ -66,6 +66,8 @@ glm::dvec3 turned_to_z(const glm::dvec3& n, const glm::dvec3& p) {
 
 std::optional<SkeletonPlane> skeleton_plane(const lsys::Skeleton& skeleton,
                                             double wall_mm) {
+  // A ball stands out of any plane: a model with one is never flat.
+  if (!skeleton.spheres.empty()) return std::nullopt;
   std::vector<glm::dvec3> points;
   double thinnest = 1e300;
   for (const lsys::Segment& s : skeleton.segments) {

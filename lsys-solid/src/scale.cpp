@@ -34,6 +34,9 @@ Box model_box(const lsys::Skeleton& s, double scale, double wall_mm) {
     for (const glm::dvec3& p : polygon.points)
       grow(p, glm::dvec3(wall_mm / 2.0));
   }
+  for (const lsys::Sphere& ball : s.spheres) {
+    grow(ball.center, glm::dvec3(std::max(ball.diameter * scale, wall_mm) / 2));
+  }
   return box;
 }
 
@@ -41,9 +44,10 @@ Box model_box(const lsys::Skeleton& s, double scale, double wall_mm) {
 
 ScaledSkeleton scale_to_print(const lsys::Skeleton& skeleton,
                               const PrintSettings& settings) {
-  if (skeleton.segments.empty() && skeleton.polygons.empty()) {
+  if (skeleton.segments.empty() && skeleton.polygons.empty() &&
+      skeleton.spheres.empty()) {
     throw GeometryError(
-        "nothing to build: the L-system draws no segment and no polygon");
+        "nothing to build: the L-system draws no segment, polygon or sphere");
   }
   double scale = 1.0;
   if (settings.scale_mm_per_unit) {
@@ -81,6 +85,10 @@ ScaledSkeleton scale_to_print(const lsys::Skeleton& skeleton,
   }
   for (lsys::Polygon& polygon : out.skeleton.polygons) {
     for (glm::dvec3& p : polygon.points) p *= scale;
+  }
+  for (lsys::Sphere& ball : out.skeleton.spheres) {
+    ball.center *= scale;
+    ball.diameter = std::max(ball.diameter * scale, settings.wall_mm);
   }
   return out;
 }

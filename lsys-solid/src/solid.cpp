@@ -700,6 +700,9 @@ void refuse_beyond_a_kilometre(const lsys::Grammar& grammar,
   for (const lsys::Polygon& polygon : scaled.skeleton.polygons) {
     for (const glm::dvec3& p : polygon.points) grow(p, 0.0);
   }
+  for (const lsys::Sphere& s : scaled.skeleton.spheres) {
+    grow(s.center, s.diameter / 2.0);
+  }
   if (reach <= kMostMm) return;
   throw lsys::error_at(*grammar.source, grammar.axiom_offset,
                        fmt::format("at {:g} mm per unit the model reaches "
@@ -719,7 +722,8 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   const lsys::Skeleton drawn =
       lsys::interpret(grammar, options.derivation, options.interpretation);
   // Drawing nothing is a mistake in the input, placed where it is made.
-  if (drawn.segments.empty() && drawn.polygons.empty()) {
+  if (drawn.segments.empty() && drawn.polygons.empty() &&
+      drawn.spheres.empty()) {
     throw lsys::nothing_drawn_error(grammar, drawn);
   }
   // A segment drawn again over an earlier one adds nothing to the print,
@@ -799,6 +803,7 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   report.tubes = parts.tubes;
   report.junctions = parts.junctions;
   report.joints = parts.joints;
+  report.spheres = parts.spheres;
   report.plates = parts.plates;
   report.skipped_polygons = parts.skipped_polygons;
   report.seconds.parts = clock.lap();

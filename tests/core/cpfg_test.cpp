@@ -236,11 +236,21 @@ TEST(Cpfg, DrawsNothingForTheEndOfASubLsystemOrAnApostrophe) {
   EXPECT_NEAR(s.segments[2].p1.z, 3.0, 1e-12);
 }
 
+TEST(Cpfg, DrawsASphereOfTheWidthOrOfTheDiameterGiven) {
+  // cpfg's blackbox.c: `@O` without a parameter takes the line width.
+  const Skeleton s =
+      interpret(cpfg("Lsystem: 1\nAxiom: !(3)F@O@O(2.5)\nendlsystem\n"));
+  ASSERT_EQ(s.spheres.size(), 2U);
+  EXPECT_DOUBLE_EQ(s.spheres[0].diameter, s.segments[0].end_diameter);
+  EXPECT_DOUBLE_EQ(s.spheres[1].diameter, 2.5);
+  EXPECT_EQ(s.spheres[0].center, s.segments[0].p1);
+}
+
 TEST(Cpfg, RefusesWhatLsolidCannotDrawByNameAtItsPlace) {
   EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: F~l(2)\n"),
             "2:9: '~' (a predefined surface) is not supported by lsolid");
-  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: F\nF --> F@O(2)\n"),
-            "3:8: '@O' (a sphere) is not supported by lsolid");
+  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: F\nF --> F@o(2)\n"),
+            "3:8: '@o' (a disc) is not supported by lsolid");
   EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: @Gs F @Ge(3)\n"),
             "2:8: '@Gs' (a generalized cylinder) is not supported by lsolid");
   EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: A\nA > ?P(x,y) --> B\n"),

@@ -181,9 +181,20 @@ TEST(Lowclouds, BareHashAddsOneAndBareBangTakesATenthAway) {
   EXPECT_DOUBLE_EQ(s.segments[3].end_diameter, 0.25);
 }
 
+TEST(Lowclouds, DrawsASphereOneAcrossUnlessTold) {
+  const Skeleton s =
+      interpret(lowclouds("derivation length: 1\naxiom: F@OF@O(0.5)\n"));
+  ASSERT_EQ(s.spheres.size(), 2U);
+  EXPECT_DOUBLE_EQ(s.spheres[0].diameter, 1.0);
+  EXPECT_DOUBLE_EQ(s.spheres[0].center.z, 1.0);
+  EXPECT_DOUBLE_EQ(s.spheres[1].diameter, 0.5);
+  EXPECT_DOUBLE_EQ(s.spheres[1].center.z, 2.0);
+  EXPECT_EQ(s.spheres[1].parent, 1);
+}
+
 TEST(Lowclouds, RefusesWhatItCannotBuildByName) {
-  EXPECT_EQ(lowclouds_error("derivation length: 1\naxiom: F@O(2)\n"),
-            "2:9: '@O' (a sphere) is not supported by lsolid");
+  EXPECT_EQ(lowclouds_error("derivation length: 1\naxiom: F@o(2)\n"),
+            "2:9: '@o' (a circle) is not supported by lsolid");
   EXPECT_EQ(lowclouds_error("derivation length: 1\naxiom: F@m(0,0,1)F\n"),
             "2:9: '@m' (a move to a point) is not supported by "
             "lsolid");
@@ -197,6 +208,9 @@ TEST(Lowclouds, RefusesWhatItCannotBuildByName) {
   EXPECT_EQ(lowclouds_error("colors = [1, 2]\naxiom: F\n"),
             "1:10: L-system Explorer's arrays, objects, strings and "
             "functions are not supported; a variable takes a number");
+  // Found by the fuzzer: a piece without `=` among the settings.
+  EXPECT_EQ(lowclouds_error("n=1; delta=22.5; [4,4,-6]};\naxiom: F\n"),
+            "1:18: expected 'name = value'");
   EXPECT_EQ(lowclouds_error("axiom: F\nx = 2\n"),
             "2:1: a variable set after the axiom (L-system Explorer "
             "ignores it); set it before 'axiom:'");

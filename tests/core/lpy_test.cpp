@@ -127,9 +127,16 @@ TEST(Lpy, RefusesPythonItWouldHaveToRunAtItsLine) {
             "1:1: 'def Start():'" + tail);
 }
 
+TEST(Lpy, DrawsSpheresByTheirRadius) {
+  const Skeleton s = drawn("F@O(0.5)Sphere(2)");
+  ASSERT_EQ(s.spheres.size(), 2U);
+  EXPECT_DOUBLE_EQ(s.spheres[0].diameter, 1.0);
+  EXPECT_DOUBLE_EQ(s.spheres[1].diameter, 4.0);
+}
+
 TEST(Lpy, RefusesModulesItCannotBuildByTheirWholeName) {
-  EXPECT_EQ(located_error_of([] { (void)drawn("F@O(0.5)"); }),
-            "1:9: '@O' (a sphere) is not supported by lsolid");
+  EXPECT_EQ(located_error_of([] { (void)drawn("F@o(0.5)"); }),
+            "1:9: '@o' (a circle) is not supported by lsolid");
   EXPECT_EQ(located_error_of([] { (void)drawn("F~l(2)"); }),
             "1:9: '~' (a predefined surface) is not supported by lsolid");
   // @Gc and @Ge are whole modules, never @, G and c.

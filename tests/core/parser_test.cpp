@@ -454,8 +454,13 @@ TEST(Parser, KeepsCpfgsAtModulesWholeAndRefusesThoseItCannotBuild) {
   const Grammar g = parse("@GsF@Gc(4)F@Ge\nn=0");
   EXPECT_EQ(to_string(derive(g), g.alphabet), "@Gs F @Gc(4) F @Ge");
   EXPECT_EQ(interpret(g).segments.size(), 2U);
-  EXPECT_EQ(located_error("F[@O(2)]\nn=0"),
-            "1:3: '@O' (a sphere) is not supported by lsolid");
+  EXPECT_EQ(located_error("F[@o(2)]\nn=0"),
+            "1:3: '@o' (a disc) is not supported by lsolid");
+  // cpfg's sphere, as the cpfg notation reads it.
+  const Skeleton ball = interpret(parse("width: 0.5\nF@OF@O(3)\nn=0"));
+  ASSERT_EQ(ball.spheres.size(), 2U);
+  EXPECT_DOUBLE_EQ(ball.spheres[0].diameter, 0.5);
+  EXPECT_DOUBLE_EQ(ball.spheres[1].diameter, 3.0);
   EXPECT_EQ(located_error("F~l(0.5)\nn=0"),
             "1:2: '~' (a predefined surface in cpfg, a random turn in "
             "Houdini) is not supported by lsolid");

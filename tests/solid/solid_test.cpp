@@ -422,6 +422,30 @@ TEST(Solid, WarnsWhenWidthsDwarfLengths) {
       << s.report.warnings[0];
 }
 
+TEST(Solid, BuildsABallWhereTheTurtleStandsAndNeverLaysItFlat) {
+  // A stem of 10 mm and 2 mm across with a berry of 6 mm on top, and a
+  // lone ball: balls of `@O` are parts of their own colour.
+  const Solid s =
+      build_solid(parse("\u03C9: F@O(0.6)[f(2);@O(0.6)]\nwidth: 0.2\n"),
+                  {.print = {.scale_mm_per_unit = 10.0, .base = Base::None}});
+  const ValidationReport& r = s.report.validation;
+  EXPECT_TRUE(r.is_printable());
+  EXPECT_EQ(s.report.spheres, 2U);
+  EXPECT_EQ(r.shells, 2U);  // the second ball stands apart
+  // Each ball's faces lie at 3 mm or farther from its centre, its corners
+  // within a few tolerances (0.05 mm) of it: the volume lies between two
+  // true balls and that plus the stem's tube.
+  const auto ball = [](double radius) {
+    return 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
+  };
+  EXPECT_GT(r.volume_mm3, 2.0 * ball(3.0));
+  EXPECT_LT(r.volume_mm3,
+            2.0 * ball(3.15) + std::numbers::pi * 1.05 * 1.05 * 10.0);
+  EXPECT_GE(r.bounds.max.z, 10.0 + 20.0 + 3.0);
+  EXPECT_LE(r.bounds.max.z, 10.0 + 20.0 + 3.15);
+  EXPECT_FALSE(s.report.placement.lies_flat);
+}
+
 TEST(Solid, RefusesAModelThatDrawsNothingAsBadInputAtItsPlace) {
   // It was a GeometryError (exit 3); F(0) draws nothing either.
   try {

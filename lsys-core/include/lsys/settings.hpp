@@ -46,6 +46,9 @@ struct Settings {
   /// ...and otherwise multiplies by this (Houdini's thickness scale; the
   /// default is Honda's and da Vinci's 1/√2 ≈ 0.707).
   double width_factor = 0.707;
+  /// The diameter of `@O(p)` per unit of p: 1 (cpfg's diameter), 2 for
+  /// L-Py's radius.
+  double sphere_diameter_per_parameter = 1.0;
   /// Multiplies every width, for files whose widths are in other units
   /// than their lengths (cpfg widths are pixels).
   double width_scale = 1.0;

@@ -33,10 +33,20 @@ struct Polygon {
   std::int32_t parent = -1;
 };
 
+/// A ball from `@O` (cpfg's sphere): a berry, a bud, a joint's knob.
+struct Sphere {
+  glm::dvec3 center{0.0};
+  double diameter = 0.0;
+  int color = 0;
+  /// The segment drawn last before it, which it sits on, or -1.
+  std::int32_t parent = -1;
+};
+
 /// The interpretation of a derived string.
 struct Skeleton {
   std::vector<Segment> segments;
   std::vector<Polygon> polygons;
+  std::vector<Sphere> spheres;
   /// Polygons dropped because fewer than 3 distinct points remained.
   std::size_t degenerate_polygons = 0;
   /// `{` never closed by `}` (dropped), and `}` without an open `{`.

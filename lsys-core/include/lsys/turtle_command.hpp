@@ -47,6 +47,7 @@ enum class TurtleCommand {
   Gravity,         ///< Lparser `t`: pitch down by p × |horizontal heading|
   RollToVerticalSwappingTurns,  ///< Lparser `$`: `$`, then `+` `-` swapped
   ElasticityChange,  ///< cpfg `_`: set the elasticity, or add its increment
+  Sphere,  ///< cpfg `@O(d)`: a ball of diameter d, or of the width, here
 };
 
 /// The command a module name has without aliases, if it has one.

@@ -31,6 +31,8 @@ const std::vector<SymbolCommand> kSymbols = [] {
       symbols.end(),
       {
           {"_", TurtleCommand::ElasticityChange, std::nullopt, 1},
+          // A sphere of the width, or of the diameter given.
+          {"@O", TurtleCommand::Sphere, std::nullopt, 1},
           // The end of a sub-L-system (whose call `?` is refused); no drawing.
           {"$", TurtleCommand::None, std::nullopt, std::nullopt},
           // Cylinder sides and contours, back-side colours, twist and texture:
@@ -47,7 +49,6 @@ const std::vector<SymbolCommand> kSymbols = [] {
 }();
 
 const std::vector<RefusedName> kRefused = {
-    {"@O", "a sphere"},
     {"@o", "a disc"},
     {"@c", "a disc"},
     {"@bo", "a circle"},

@@ -75,7 +75,7 @@ class GrammarBuilder : TextScan {
     // nothing more than lsolid's joined tubes.
     if (draft_.symbols.empty()) {
       for (const char* name :
-           {"@v", "@Tp", "@Ts", "@Gs", "@Gc", "@Ge", "@Gt", "@Gr"}) {
+           {"@v", "@Tp", "@Ts", "@O", "@Gs", "@Gc", "@Ge", "@Gt", "@Gr"}) {
         grammar_.alphabet.intern(name);
       }
     }

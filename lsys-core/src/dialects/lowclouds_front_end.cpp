@@ -26,6 +26,8 @@ const std::vector<SymbolCommand> kSymbols = [] {
   symbols.insert(symbols.end(),
                  {
                      {"@Tx", TurtleCommand::None, std::nullopt, std::nullopt},
+                     // Its sphere is 1 across unless told (turtle3d.js).
+                     {"@O", TurtleCommand::Sphere, 1.0, 1},
                      {"@D", TurtleCommand::None, std::nullopt, std::nullopt},
                      {"@Di", TurtleCommand::None, std::nullopt, std::nullopt},
                  });
@@ -33,7 +35,6 @@ const std::vector<SymbolCommand> kSymbols = [] {
 }();
 
 const std::vector<RefusedName> kRefused = {
-    {"@O", "a sphere"},
     {"@o", "a circle"},
     {"@c", "a circle"},
     {"@M", "a move to a point"},

@@ -45,6 +45,9 @@ const std::vector<SymbolCommand> kSymbols = {
     {"_", TurtleCommand::Widen, std::nullopt},
     {"!", TurtleCommand::Width, std::nullopt},
     {"SetWidth", TurtleCommand::Width, std::nullopt},
+    // Sphere(radius), of the width without one.
+    {"@O", TurtleCommand::Sphere, std::nullopt},
+    {"Sphere", TurtleCommand::Sphere, std::nullopt},
     {";", TurtleCommand::ColorNext, std::nullopt},
     {",", TurtleCommand::ColorPrevious, std::nullopt},
     {"SetColor", TurtleCommand::ColorNext, std::nullopt},
@@ -62,7 +65,6 @@ const std::vector<SymbolCommand> kSymbols = {
 // L-Py modules lsolid knows by name but cannot build: refused where they
 // stand rather than split into letters.
 const std::vector<RefusedName> kRefused = {
-    {"@O", "a sphere"},
     {"@o", "a circle"},
     {"@B", "a box"},
     {"@b", "a quad"},
@@ -149,7 +151,8 @@ class LpyReader : TextScan {
     s.angle_deg = 60.0;
     s.step = 1.0;
     s.initial_width = 0.1;
-    s.width_scale = 2.0;  // L-Py's widths are radii
+    s.width_scale = 2.0;                    // L-Py's widths are radii
+    s.sphere_diameter_per_parameter = 2.0;  // and so are its spheres
     s.width_increment = 1.0;
     s.initial_color = 1;
     s.tropism = glm::dvec3(0.0, 0.0, 1.0);

@@ -104,7 +104,6 @@ constexpr std::array<Header, 8> kHeaders{{
 // Modules of cpfg (and Houdini's `~`) that lsolid cannot build: refused
 // where they stand rather than split into letters (`@O` is not `@`, `O`).
 const std::vector<RefusedName> kRefused = {
-    {"@O", "a sphere"},
     {"@o", "a disc"},
     {"@c", "a disc"},
     {"@M", "a move to a point"},
@@ -724,12 +723,13 @@ class LsReader : TextScan {
 
   void lowclouds_assignment(Range piece) {
     const std::size_t equals = find_equals(piece);
+    if (equals == std::string::npos) {
+      fail(piece.begin, "expected 'name = value'");
+    }
     const Range name = trim(Range{piece.begin, equals});
     const Range value = trim(Range{equals + 1, piece.end});
     const std::string_view word = view(name);
-    if (equals == std::string::npos || !is_identifier(word)) {
-      fail(piece.begin, "expected 'name = value'");
-    }
+    if (!is_identifier(word)) fail(piece.begin, "expected 'name = value'");
     if (word == "view") return;  // the camera: nothing to print
     if (value.empty()) fail(equals, "expected a value after '='");
     const char first = text_[value.begin];

@@ -44,6 +44,8 @@ struct PartSet {
   /// Joint spheres, where a junction is left to the union.
   std::size_t joints = 0;
   std::size_t plates = 0;
+  /// Balls of `@O`.
+  std::size_t spheres = 0;
   /// Polygons without area or whose outline crosses itself: not printed.
   std::size_t skipped_polygons = 0;
 };

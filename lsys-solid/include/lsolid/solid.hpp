@@ -77,6 +77,7 @@ struct SolidReport {
   std::size_t junctions = 0;  ///< branch points meshed directly
   std::size_t joints = 0;
   std::size_t plates = 0;
+  std::size_t spheres = 0;  ///< balls of `@O`
   std::size_t skipped_polygons = 0;
   lsys::Skeleton dropped;  ///< only the counts of what the turtle dropped
   double mm_per_unit = 1.0;

@@ -34,9 +34,10 @@ struct Function {
   Op op;
   int arity;
   bool cpfg_only = false;
+  bool mathjs_only = false;
 };
 
-constexpr std::array<Function, 23> kFunctions{{
+constexpr std::array<Function, 25> kFunctions{{
     {"sin", Op::Sin, 1},
     {"cos", Op::Cos, 1},
     {"tan", Op::Tan, 1},
@@ -62,6 +63,10 @@ constexpr std::array<Function, 23> kFunctions{{
     {"bran", Op::Bran, 2, true},
     {"biran", Op::Biran, 2, true},
     {"srand", Op::Srand, 1, true},
+    // mathjs's (L-system Explorer): round halves up, as JavaScript's
+    // Math.round, which is what cpfg's trunc computes.
+    {"round", Op::Trunc, 1, false, true},
+    {"pow", Op::Power, 2, false, true},
 }};
 
 int arity(Op op) {
@@ -621,7 +626,8 @@ class Compiler {
     for (const Function& f : kFunctions) {
       if (f.name == name) function = &f;
     }
-    if (function == nullptr || (function->cpfg_only && !scope_.cpfg)) {
+    if (function == nullptr || (function->cpfg_only && !scope_.cpfg) ||
+        (function->mathjs_only && !scope_.mathjs)) {
       fail(at, "'" + name + "' is not a function");
     }
     accept("(");

@@ -132,6 +132,9 @@ TEST(Lowclouds, ReadsMathjsLogicAndRadians) {
             "C(1)BC(1)");
   EXPECT_EQ(derived("derivation length: 1\naxiom: A\nA -> F(sin(pi/2))\n"),
             "F(1)");
+  EXPECT_EQ(derived("derivation length: 1\naxiom: A(2.5)\n"
+                    "A(x) -> B(round(x), pow(2, 3))\n"),
+            "B(3,8)");
   // A parameter named like an operator word is a parameter.
   EXPECT_EQ(derived("derivation length: 1\naxiom: A(2)\n"
                     "A(order) : order > 1 -> B(order)\n"),

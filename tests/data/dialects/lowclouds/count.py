@@ -76,4 +76,4 @@ def read(path):
 
 consts, axiom, rules, n = read(sys.argv[1])
 s = run(consts, axiom, rules, n)
-print(sys.argv[1], 'n =', n, 'segments', sum(1 for m, _ in s if m in 'FG'), 'polygons', sum(1 for m, _ in s if m == '{'))
+print(sys.argv[1], 'n =', n, 'segments', sum(1 for m, _ in s if m in 'FG'), 'polygons', sum(1 for m, _ in s if m == '{'), 'spheres', sum(1 for m, _ in s if m == '@O'))

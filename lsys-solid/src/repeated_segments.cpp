@@ -22,11 +22,75 @@ constexpr double kGridFraction = 1e-9;
 
 using EndKey = std::tuple<std::int64_t, std::int64_t, std::int64_t>;
 
+// Leaves out each ball that a larger or earlier one holds, to 10⁻⁹ of the
+// balls' extent: cpfg's florigen and sympodial models draw the same bud
+// twice, a few ulps apart, and two such balls of other seams meet along
+// their whole surface, which the union does not survive (vlab's
+// sympodial plant lost a tube). Returns how many were left out.
+std::size_t drop_held_spheres(std::vector<lsys::Sphere>& balls) {
+  if (balls.size() < 2) return 0;
+  glm::dvec3 lo = balls.front().center;
+  glm::dvec3 hi = lo;
+  double widest = 0.0;
+  for (const lsys::Sphere& b : balls) {
+    lo = glm::min(lo, b.center);
+    hi = glm::max(hi, b.center);
+    widest = std::max(widest, b.diameter);
+  }
+  const double slack = (glm::length(hi - lo) + widest) * kGridFraction;
+  // Cells as wide as the widest ball: a ball that holds another has its
+  // centre in the same cell or a neighbour.
+  const double cell = std::max(widest, 1e-300);
+  const auto cell_of = [&](const glm::dvec3& p) {
+    const glm::dvec3 q = glm::floor((p - lo) / cell);
+    return EndKey{static_cast<std::int64_t>(q.x),
+                  static_cast<std::int64_t>(q.y),
+                  static_cast<std::int64_t>(q.z)};
+  };
+  std::vector<std::size_t> order(balls.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) {
+                     return balls[a].diameter > balls[b].diameter;
+                   });
+  std::map<EndKey, std::vector<std::size_t>> kept;
+  std::vector<bool> held(balls.size(), false);
+  for (const std::size_t i : order) {
+    const lsys::Sphere& b = balls[i];
+    const auto [x, y, z] = cell_of(b.center);
+    for (std::int64_t dx = -1; dx <= 1 && !held[i]; ++dx) {
+      for (std::int64_t dy = -1; dy <= 1 && !held[i]; ++dy) {
+        for (std::int64_t dz = -1; dz <= 1 && !held[i]; ++dz) {
+          const auto it = kept.find(EndKey{x + dx, y + dy, z + dz});
+          if (it == kept.end()) continue;
+          for (const std::size_t k : it->second) {
+            const lsys::Sphere& big = balls[k];
+            if (glm::distance(b.center, big.center) + b.diameter / 2.0 <=
+                big.diameter / 2.0 + slack) {
+              held[i] = true;
+              break;
+            }
+          }
+        }
+      }
+    }
+    if (!held[i]) kept[cell_of(b.center)].push_back(i);
+  }
+  std::vector<lsys::Sphere> out;
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    if (!held[i]) out.push_back(balls[i]);
+  }
+  const std::size_t dropped = balls.size() - out.size();
+  balls = std::move(out);
+  return dropped;
+}
+
 }  // namespace
 
 WithoutRepeats without_repeated_segments(const lsys::Skeleton& skeleton) {
   WithoutRepeats out;
   out.skeleton = skeleton;
+  out.dropped_spheres = drop_held_spheres(out.skeleton.spheres);
   const std::vector<lsys::Segment>& in = skeleton.segments;
   if (in.empty()) return out;
   glm::dvec3 lo = in.front().p0;

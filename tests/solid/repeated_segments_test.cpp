@@ -83,5 +83,26 @@ TEST(RepeatedSegments, LeavesASkeletonWithoutRepeatsAsItIs) {
       without_repeated_segments(lsys::Skeleton{}).skeleton.segments.empty());
 }
 
+TEST(RepeatedSegments, LeavesOutBallsThatAnotherBallHolds) {
+  // vlab's sympodial plant: the same bud twice, a few ulps apart; a small
+  // ball inside a big one; and two that only overlap, which both stay.
+  lsys::Skeleton s;
+  const glm::dvec3 bud(-3.1976425923446485, 14.854651310439685, 98.8131838);
+  const glm::dvec3 twin(-3.1976425923446468, 14.854651310439687, 98.8131838);
+  s.spheres = {lsys::Sphere{bud, 0.8, 2, -1},
+               lsys::Sphere{twin, 0.8, 3, -1},
+               lsys::Sphere{{10, 0, 0}, 0.5, 0, -1},
+               lsys::Sphere{{10.2, 0, 0}, 2.0, 1, -1},
+               lsys::Sphere{{20, 0, 0}, 2.0, 0, -1},
+               lsys::Sphere{{21, 0, 0}, 2.0, 0, -1}};
+  const WithoutRepeats w = without_repeated_segments(s);
+  EXPECT_EQ(w.dropped_spheres, 2U);
+  ASSERT_EQ(w.skeleton.spheres.size(), 4U);
+  EXPECT_EQ(w.skeleton.spheres[0].color, 2);       // the first of the twins
+  EXPECT_EQ(w.skeleton.spheres[1].diameter, 2.0);  // the big one holds
+  EXPECT_EQ(w.skeleton.spheres[2].center, glm::dvec3(20, 0, 0));
+  EXPECT_EQ(w.skeleton.spheres[3].center, glm::dvec3(21, 0, 0));
+}
+
 }  // namespace
 }  // namespace lsolid

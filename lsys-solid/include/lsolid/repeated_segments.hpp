@@ -12,6 +12,7 @@ namespace lsolid {
 struct WithoutRepeats {
   lsys::Skeleton skeleton;
   std::size_t dropped = 0;  ///< segments drawn again over an earlier one
+  std::size_t dropped_spheres = 0;  ///< balls inside another ball
 };
 
 /// Leaves out each segment that repeats an earlier one: the same start and
@@ -21,7 +22,8 @@ struct WithoutRepeats {
 /// hung from a segment left out hang from the one kept; the order of what
 /// is kept is unchanged. So the printed shape is the same, but the union
 /// does not meet two tubes face on face: ABOP fig. 1.24b draws 1,365 of its
-/// 3,125 segments twice.
+/// 3,125 segments twice. Likewise each `@O` ball that a larger (or, of the
+/// same size, an earlier) ball holds is left out.
 [[nodiscard]] WithoutRepeats without_repeated_segments(
     const lsys::Skeleton& skeleton);
 

@@ -157,6 +157,10 @@ TEST(Lowclouds, RandomNumbersAreTheSameEveryRun) {
                             "A -> F(random(1, 2, 3))\n")
                 .find("'random' takes at most 2 arguments"),
             std::string::npos);
+  // A variable is set once, before deriving: never silently to 1.
+  EXPECT_EQ(lowclouds_error("x = random()\nstemsize=0.1\naxiom: F(x)\n"),
+            "1:5: a constant's value must be a number or arithmetic over "
+            "numbers and constants, not a random number");
 }
 
 TEST(Lowclouds, OnlyNumberedLabelsAreLabels) {

@@ -325,13 +325,22 @@ class GrammarBuilder : TextScan {
     }
   }
 
+  // The value of a constant: numbers and other constants only. A random
+  // number (L-system Explorer's `x = random()`) is drawn while deriving,
+  // never once for the whole file.
   double constant(Range r) const {
-    return parse_expression(source_, r.begin, r.end,
-                            ExpressionScope{.constants = &grammar_.constants,
-                                            .used_constants = &used_constants_,
-                                            .radians = draft_.syntax.radians,
-                                            .mathjs = draft_.syntax.mathjs})
-        .constant_value();
+    const Expression e =
+        parse_expression(source_, r.begin, r.end,
+                         ExpressionScope{.constants = &grammar_.constants,
+                                         .used_constants = &used_constants_,
+                                         .radians = draft_.syntax.radians,
+                                         .mathjs = draft_.syntax.mathjs});
+    if (!e.is_constant()) {
+      fail(r.begin,
+           "a constant's value must be a number or arithmetic over numbers "
+           "and constants, not a random number");
+    }
+    return e.constant_value();
   }
 
   void read_aliases() {

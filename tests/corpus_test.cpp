@@ -62,6 +62,14 @@ TEST_P(Corpus, DerivesWhatItsSourceDrawsOrIsRefusedByName) {
     if (!skeleton.spheres.empty()) {
       counts << ", spheres " << skeleton.spheres.size();
     }
+    if (!skeleton.sheets.empty()) {
+      std::size_t triangles = 0;
+      for (const lsys::Sheet& sheet : skeleton.sheets) {
+        triangles += sheet.triangles.size();
+      }
+      counts << ", surfaces " << skeleton.sheets.size() << " of " << triangles
+             << " triangles";
+    }
     EXPECT_EQ(counts.str(), e.expect);
   } catch (const lsys::ParseError& error) {
     ASSERT_TRUE(e.expect.starts_with("error: ")) << error.what();

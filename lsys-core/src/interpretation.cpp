@@ -180,7 +180,45 @@ class Interpreter {
       params =
           std::span<const double>(&*grammar_.default_parameters[symbol], 1);
     }
+    if (grammar_.commands[symbol] == TurtleCommand::Surface) {
+      draw_surface(grammar_.surfaces.at(symbol), params);
+      return;
+    }
     execute(grammar_.commands[symbol], params, generation);
+  }
+
+  // cpfg's `~l(sx, sy, sz)` (one scale for all, or none for 1): the
+  // surface placed at the turtle as one sheet, then the turtle moves to the
+  // surface's end point (cpfg's patches.c). The surface's z is cpfg's up,
+  // lsolid's −up. A scale of 0 leaves no area: the sheet is dropped and
+  // counted with the degenerate polygons.
+  void draw_surface(const Surface& surface, std::span<const double> params) {
+    const double sx = params.empty() ? 1.0 : params[0];
+    const double sy = params.size() >= 2 ? params[1] : sx;
+    const double sz = params.size() >= 3 ? params[2] : sx;
+    Turtle& turtle = state_.turtle;
+    const glm::dvec3 origin = turtle.position();
+    const glm::dvec3 l = turtle.left();
+    const glm::dvec3 h = turtle.heading();
+    const glm::dvec3 u = -turtle.up();
+    Sheet sheet{.color = state_.color, .parent = state_.last_segment};
+    sheet.points.reserve(surface.points.size());
+    for (const glm::dvec3& p : surface.points) {
+      sheet.points.push_back(origin + (sx * p.x) * l + (sy * p.y) * h +
+                             (sz * p.z) * u);
+      turtle.set_position(sheet.points.back());
+      check_finite();  // throws if the surface left the doubles
+    }
+    turtle.set_position(origin + sx * (surface.end_point.x * l +
+                                       surface.end_point.y * h +
+                                       surface.end_point.z * u));
+    check_finite();
+    if (sx == 0.0 || sy == 0.0 || sz == 0.0) {
+      ++skeleton_.degenerate_polygons;
+      return;
+    }
+    sheet.triangles = surface.triangles;
+    skeleton_.sheets.push_back(std::move(sheet));
   }
 
   double angle(std::span<const double> params) const {
@@ -197,6 +235,7 @@ class Interpreter {
     Turtle& turtle = state_.turtle;
     switch (command) {
       case TurtleCommand::None:
+      case TurtleCommand::Surface:  // drawn by interpret, which knows which
       case TurtleCommand::Cut:
         return;
       case TurtleCommand::Draw:

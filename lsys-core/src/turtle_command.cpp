@@ -62,6 +62,7 @@ int max_parameters(TurtleCommand command) noexcept {
     case TurtleCommand::DrawNoVertex:
       return 2;
     case TurtleCommand::SetTropism:
+    case TurtleCommand::Surface:
       return 3;
     case TurtleCommand::TurnAround:
     case TurtleCommand::RollToVertical:

@@ -51,10 +51,12 @@ void print_report(const SolidReport& r, bool united) {
                                r.repeated_segments),
              r.polygons);
   fmt::print(
-      "parts: {} tubes, {} junction hulls, {} joints, {} leaf plates{}; scale "
-      "{:.4g} mm per unit\n",
+      "parts: {} tubes, {} junction hulls, {} joints, {} leaf plates{}{}; "
+      "scale {:.4g} mm per unit\n",
       r.tubes, r.junctions, r.joints, r.plates,
       r.spheres == 0 ? std::string() : fmt::format(", {} spheres", r.spheres),
+      r.sheets == 0 ? std::string()
+                    : fmt::format(", {} surface plates", r.sheets),
       r.mm_per_unit);
   if (r.skipped_polygons > 0) {
     fmt::print("skipped: {} polygons without area or crossing themselves\n",
@@ -189,7 +191,8 @@ std::string json_report(const Solid& solid, const OverhangReport& over,
       "{{\"output\": {}, \"written\": {}, \"united\": {}, \"segments\": {}, "
       "\"repeated_segments\": {}, "
       "\"leaves\": {}, \"tubes\": {}, \"junction_hulls\": {}, \"joints\": {}, "
-      "\"leaf_plates\": {}, \"spheres\": {}, \"contacts\": {}, "
+      "\"leaf_plates\": {}, \"spheres\": {}, \"surface_plates\": {}, "
+      "\"contacts\": {}, "
       "\"booleans\": {}, "
       "\"mm_per_unit\": {}, "
       "\"base\": {}, \"lies_flat\": {}, \"profile\": {}, "
@@ -205,7 +208,8 @@ std::string json_report(const Solid& solid, const OverhangReport& over,
       "\"volumes\": {}}}}}\n",
       json_string(output.string()), written, united, r.segments,
       r.repeated_segments, r.polygons, r.tubes, r.junctions, r.joints, r.plates,
-      r.spheres, r.union_stats.contacts, r.union_stats.booleans, r.mm_per_unit,
+      r.spheres, r.sheets, r.union_stats.contacts, r.union_stats.booleans,
+      r.mm_per_unit,
       p.has_base ? fmt::format("{{\"radius_mm\": {}, \"thickness_mm\": {}}}",
                                p.base_radius_mm, p.base_thickness_mm)
                  : std::string("null"),

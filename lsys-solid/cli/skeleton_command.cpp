@@ -72,6 +72,27 @@ void write_json(const lsys::Skeleton& skeleton, const char* units,
     }
     text += "]";
   }
+  if (!skeleton.sheets.empty()) {
+    text += ",\n\"surfaces\": [";
+    for (std::size_t i = 0; i < skeleton.sheets.size(); ++i) {
+      const lsys::Sheet& sheet = skeleton.sheets[i];
+      text += i == 0 ? "\n" : ",\n";
+      text += "{\"points\": [";
+      for (std::size_t k = 0; k < sheet.points.size(); ++k) {
+        if (k > 0) text += ", ";
+        append_point(text, sheet.points[k]);
+      }
+      text += "], \"triangles\": [";
+      for (std::size_t k = 0; k < sheet.triangles.size(); ++k) {
+        const auto& t = sheet.triangles[k];
+        text +=
+            fmt::format("{}[{}, {}, {}]", k == 0 ? "" : ", ", t[0], t[1], t[2]);
+      }
+      text += "], \"color\": " + std::to_string(sheet.color) + "}";
+      out.flush_if_large();
+    }
+    text += "]";
+  }
   text += "}\n";
 }
 
@@ -94,11 +115,22 @@ void write_summary(const lsys::Skeleton& skeleton, const char* units,
     grow(ball.center - glm::dvec3(ball.diameter / 2.0));
     grow(ball.center + glm::dvec3(ball.diameter / 2.0));
   }
+  for (const lsys::Sheet& sheet : skeleton.sheets) {
+    for (const glm::dvec3& p : sheet.points) grow(p);
+  }
   std::string& text = out.text();
   text += fmt::format("segments: {}\npolygons: {}\n", skeleton.segments.size(),
                       skeleton.polygons.size());
   if (!skeleton.spheres.empty()) {
     text += fmt::format("spheres: {}\n", skeleton.spheres.size());
+  }
+  if (!skeleton.sheets.empty()) {
+    std::size_t triangles = 0;
+    for (const lsys::Sheet& sheet : skeleton.sheets) {
+      triangles += sheet.triangles.size();
+    }
+    text += fmt::format("surfaces: {} ({} triangles)\n", skeleton.sheets.size(),
+                        triangles);
   }
   if (low.x > high.x) {
     text += "bounds: none (nothing is drawn)\n";
@@ -133,8 +165,7 @@ void run_skeleton(const SkeletonCommand& command) {
   const PrintInput& p = command.print;
   const bool in_mm = p.wall || p.height || p.size || p.scale;
   // Nothing drawn cannot be scaled: bad input, placed, as for a build.
-  const bool nothing = skeleton.segments.empty() && skeleton.polygons.empty() &&
-                       skeleton.spheres.empty();
+  const bool nothing = lsys::draws_nothing(skeleton);
   if (in_mm && nothing) throw lsys::nothing_drawn_error(grammar, skeleton);
   if (nothing) {
     std::fputs(

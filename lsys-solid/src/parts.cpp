@@ -31,7 +31,9 @@
 
 #include "cgal/junction_geometry.hpp"
 #include "cgal/plate_geometry.hpp"
+#include "lsolid/errors.hpp"
 #include "lsolid/validate.hpp"
+#include "thickened_sheet.hpp"
 #include "union_find.hpp"
 
 namespace lsolid {
@@ -57,7 +59,10 @@ constexpr double kStraight = 1.0 - 1e-12;  // cos of a bend too small to see
 // errors of about 1e-15 of the size.
 constexpr double kCoplanar = 1e-9;
 constexpr double kParallel = 1.0 - 1e-9;  // |cos| of parallel leaf normals
-constexpr double kPlateMargin = 1.05;     // plate over the thinnest tube
+constexpr double kPlateMargin = 1.05;
+// A sheet at most this many plate thicknesses across may become its
+// thickened points' convex hull when it cannot be thickened cleanly.
+constexpr double kHullSheetWalls = 8.0;  // plate over the thinnest tube
 
 glm::dvec3 direction(const lsys::Segment& s) {
   return glm::normalize(s.p1 - s.p0);
@@ -103,6 +108,9 @@ double size_of(const lsys::Skeleton& skeleton) {
   for (const lsys::Sphere& s : skeleton.spheres) {
     add(s.center - glm::dvec3(s.diameter / 2.0));
     add(s.center + glm::dvec3(s.diameter / 2.0));
+  }
+  for (const lsys::Sheet& sheet : skeleton.sheets) {
+    for (const glm::dvec3& p : sheet.points) add(p);
   }
   const glm::dvec3 extent = box.max - box.min;
   return std::max({1.0, extent.x, extent.y, extent.z});
@@ -211,6 +219,7 @@ class PartBuilder {
                b.color});
       ++set_.spheres;
     }
+    for (std::size_t i = 0; i < skeleton_.sheets.size(); ++i) add_sheet(i);
     return std::move(set_);
   }
 
@@ -1234,6 +1243,61 @@ class PartBuilder {
       }
     }
     return mesh;
+  }
+
+  // A sheet (a predefined surface, cpfg's `~l`) thickened as plates are:
+  // along its normals, or if that cuts itself (a leaf's pointed tip bends
+  // sharply for the thickness) swept along its mean normal. A sheet a few
+  // walls across that neither way makes clear of itself (a bud 3 mm wide,
+  // a leaf just emerging) is printed as the convex hull of its points
+  // thickened, which a print that small barely tells apart; a larger one
+  // would print wrong, so it ends the build, named.
+  void add_sheet(std::size_t index) {
+    const lsys::Sheet& sheet = skeleton_.sheets[index];
+    const double thickness = plate_thickness();
+    const glm::dvec3 at = sheet.points[sheet.triangles[0][0]];
+    std::string label = fmt::format("surface {} at ({:.3f}, {:.3f}, {:.3f}) mm",
+                                    index, at.x, at.y, at.z);
+    for (const SheetOffset way :
+         {SheetOffset::Normals, SheetOffset::MeanNormal}) {
+      std::optional<TriangleMesh> mesh = thicken_sheet(sheet, thickness, way);
+      if (!mesh || !validate(*mesh).is_printable()) continue;
+      set_.parts.push_back(
+          Part{std::move(*mesh), std::move(label), sheet.color});
+      ++set_.sheets;
+      return;
+    }
+    Box box;
+    for (const glm::dvec3& p : sheet.points) {
+      box.min = glm::min(box.min, p);
+      box.max = glm::max(box.max, p);
+    }
+    const glm::dvec3 size = box.size();
+    const double across = std::max({size.x, size.y, size.z});
+    if (across <= kHullSheetWalls * thickness) {
+      // Each point moved half the thickness along each axis both ways: the
+      // hull holds the sheet thickened along any normal.
+      TriangleMesh hull;
+      for (const glm::dvec3& p : sheet.points) {
+        for (int axis = 0; axis < 3; ++axis) {
+          glm::dvec3 d(0.0);
+          d[axis] = thickness / 2.0;
+          hull.vertices.push_back(p - d);
+          hull.vertices.push_back(p + d);
+        }
+      }
+      hull.triangles = convex_hull_triangles(hull.vertices);
+      remove_unused_vertices(hull);
+      set_.parts.push_back(
+          Part{std::move(hull), std::move(label), sheet.color});
+      ++set_.sheets;
+      ++set_.hulled_sheets;
+      return;
+    }
+    throw GeometryError(fmt::format(
+        "{}, {:.1f} mm across, bends too sharply to thicken to {:.2f} mm "
+        "without cutting itself; draw it larger or give a thinner --wall",
+        label, across, thickness));
   }
 
   void add_plate(const Outline& outline, std::size_t index) {

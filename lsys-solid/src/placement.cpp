@@ -66,8 +66,11 @@ glm::dvec3 turned_to_z(const glm::dvec3& n, const glm::dvec3& p) {
 
 std::optional<SkeletonPlane> skeleton_plane(const lsys::Skeleton& skeleton,
                                             double wall_mm) {
-  // A ball stands out of any plane: a model with one is never flat.
-  if (!skeleton.spheres.empty()) return std::nullopt;
+  // A ball stands out of any plane, and a sheet is curved (its thickened
+  // plate is no footprint): a model with either is never flat.
+  if (!skeleton.spheres.empty() || !skeleton.sheets.empty()) {
+    return std::nullopt;
+  }
   std::vector<glm::dvec3> points;
   double thinnest = 1e300;
   for (const lsys::Segment& s : skeleton.segments) {

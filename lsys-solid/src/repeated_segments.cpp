@@ -147,6 +147,7 @@ WithoutRepeats without_repeated_segments(const lsys::Skeleton& skeleton) {
   for (lsys::Segment& s : out.skeleton.segments) s.parent = renumber(s.parent);
   for (lsys::Polygon& p : out.skeleton.polygons) p.parent = renumber(p.parent);
   for (lsys::Sphere& s : out.skeleton.spheres) s.parent = renumber(s.parent);
+  for (lsys::Sheet& s : out.skeleton.sheets) s.parent = renumber(s.parent);
   out.dropped = in.size() - out.skeleton.segments.size();
   return out;
 }

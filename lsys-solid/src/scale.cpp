@@ -37,6 +37,9 @@ Box model_box(const lsys::Skeleton& s, double scale, double wall_mm) {
   for (const lsys::Sphere& ball : s.spheres) {
     grow(ball.center, glm::dvec3(std::max(ball.diameter * scale, wall_mm) / 2));
   }
+  for (const lsys::Sheet& sheet : s.sheets) {
+    for (const glm::dvec3& p : sheet.points) grow(p, glm::dvec3(wall_mm / 2.0));
+  }
   return box;
 }
 
@@ -44,10 +47,10 @@ Box model_box(const lsys::Skeleton& s, double scale, double wall_mm) {
 
 ScaledSkeleton scale_to_print(const lsys::Skeleton& skeleton,
                               const PrintSettings& settings) {
-  if (skeleton.segments.empty() && skeleton.polygons.empty() &&
-      skeleton.spheres.empty()) {
+  if (lsys::draws_nothing(skeleton)) {
     throw GeometryError(
-        "nothing to build: the L-system draws no segment, polygon or sphere");
+        "nothing to build: the L-system draws no segment, polygon, sphere or "
+        "surface");
   }
   double scale = 1.0;
   if (settings.scale_mm_per_unit) {
@@ -89,6 +92,9 @@ ScaledSkeleton scale_to_print(const lsys::Skeleton& skeleton,
   for (lsys::Sphere& ball : out.skeleton.spheres) {
     ball.center *= scale;
     ball.diameter = std::max(ball.diameter * scale, settings.wall_mm);
+  }
+  for (lsys::Sheet& sheet : out.skeleton.sheets) {
+    for (glm::dvec3& p : sheet.points) p *= scale;
   }
   return out;
 }

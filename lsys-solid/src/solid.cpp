@@ -703,6 +703,9 @@ void refuse_beyond_a_kilometre(const lsys::Grammar& grammar,
   for (const lsys::Sphere& s : scaled.skeleton.spheres) {
     grow(s.center, s.diameter / 2.0);
   }
+  for (const lsys::Sheet& sheet : scaled.skeleton.sheets) {
+    for (const glm::dvec3& p : sheet.points) grow(p, 0.0);
+  }
   if (reach <= kMostMm) return;
   throw lsys::error_at(*grammar.source, grammar.axiom_offset,
                        fmt::format("at {:g} mm per unit the model reaches "
@@ -722,8 +725,7 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   const lsys::Skeleton drawn =
       lsys::interpret(grammar, options.derivation, options.interpretation);
   // Drawing nothing is a mistake in the input, placed where it is made.
-  if (drawn.segments.empty() && drawn.polygons.empty() &&
-      drawn.spheres.empty()) {
+  if (lsys::draws_nothing(drawn)) {
     throw lsys::nothing_drawn_error(grammar, drawn);
   }
   // A segment drawn again over an earlier one adds nothing to the print,
@@ -804,6 +806,13 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   report.junctions = parts.junctions;
   report.joints = parts.joints;
   report.spheres = parts.spheres;
+  report.sheets = parts.sheets;
+  if (parts.hulled_sheets > 0) {
+    report.warnings.push_back(fmt::format(
+        "{} of {} surfaces, a few walls across, bend too sharply to thicken "
+        "and are printed as the convex hull of their thickened points",
+        parts.hulled_sheets, parts.sheets));
+  }
   report.plates = parts.plates;
   report.skipped_polygons = parts.skipped_polygons;
   report.seconds.parts = clock.lap();

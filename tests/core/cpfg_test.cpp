@@ -248,7 +248,8 @@ TEST(Cpfg, DrawsASphereOfTheWidthOrOfTheDiameterGiven) {
 
 TEST(Cpfg, RefusesWhatLsolidCannotDrawByNameAtItsPlace) {
   EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: F~l(2)\n"),
-            "2:9: '~' (a predefined surface) is not supported by lsolid");
+            "2:9: '~' (a predefined surface that no surface: line of the "
+            "view names) is not supported by lsolid");
   EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: F\nF --> F@o(2)\n"),
             "3:8: '@o' (a disc) is not supported by lsolid");
   EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: @Gs F @Ge(3)\n"),
@@ -394,6 +395,99 @@ TEST_F(CpfgFiles, ReadsTheFunctionsTheViewFileNames) {
         "fver 1 1\nname: line\nsamples: 1e9\nflip: off\npoints: 4\n");
   EXPECT_EQ(located_error_of([&] { (void)read("leaf.l"); }),
             "3:10: samples must be a whole number from 0 to 100000");
+}
+
+// One bicubic Bézier patch in the form of vlab's bezieredit: a flat
+// square, its control points (j/3, i/3, 0) in row i, and a first row that
+// is one point when `pointed`.
+std::string square_patch(bool pointed) {
+  std::string text;
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 4; ++j) {
+      const double x = i == 0 && pointed ? 0.5 : j / 3.0;
+      text += std::to_string(x) + " " + std::to_string(i / 3.0) + " 0 ";
+    }
+    text += "\n";
+  }
+  return "patch\nTOP COLOR: 0 DIFFUSE: 0.00 BOTTOM COLOR: 0 DIFFUSE: 0.00\n"
+         "AL: ~ A: ~ AR: ~\nL: ~ R: ~\nBL: ~ B: ~ BR: ~\n" +
+         text;
+}
+
+constexpr std::string_view kSurfaceHead =
+    "0 1 0 1 0 0\nCONTACT POINT X: 0 Y: 0 Z: 0\n"
+    "END POINT X: 0 Y: 1 Z: 0\nHEADING X: 0 Y: 1 Z: 0\n"
+    "UP X: 0 Y: 0 Z: 1\nSIZE: 1\n";
+
+TEST_F(CpfgFiles, DrawsASurfaceAsOneSheetWhereTheTurtleStands) {
+  write("leaf.l", "Lsystem: 1\nAxiom: F~l\nendlsystem\n");
+  write("leaf.v", "surface: l sq.s 2 3 2\n");
+  write("sq.s", std::string(kSurfaceHead) + square_patch(false));
+  const Skeleton s = interpret(read("leaf.l"));
+  ASSERT_EQ(s.sheets.size(), 1U);
+  const Sheet& sheet = s.sheets[0];
+  // Meshed 3 × 2 as the view asks: 4 × 3 points, two triangles a cell.
+  EXPECT_EQ(sheet.points.size(), 12U);
+  EXPECT_EQ(sheet.triangles.size(), 12U);
+  EXPECT_EQ(sheet.parent, 0);
+  // The file's x runs along the turtle's left, its y along the heading,
+  // scaled by the view's 2 for the file's SIZE 1, from the contact point.
+  const Segment& stem = s.segments[0];
+  const glm::dvec3 heading = glm::normalize(stem.p1 - stem.p0);
+  const glm::dvec3 far = sheet.points.back();  // row 3, column 3: (1, 1)
+  EXPECT_NEAR(glm::dot(far - stem.p1, heading), 2.0, 1e-12);
+  EXPECT_NEAR(glm::length(far - stem.p1), 2.0 * std::sqrt(2.0), 1e-12);
+  EXPECT_EQ(sheet.points.front(), stem.p1);
+  // The turtle ends at the end point: a second F starts 2 further on.
+  write("leaf.l", "Lsystem: 1\nAxiom: F~lF\nendlsystem\n");
+  const Skeleton moved = interpret(read("leaf.l"));
+  ASSERT_EQ(moved.segments.size(), 2U);
+  EXPECT_NEAR(glm::length(moved.segments[1].p0 - moved.segments[0].p1), 2.0,
+              1e-12);
+}
+
+TEST_F(CpfgFiles, WeldsTheEdgesPatchesShareAndAPointedRow) {
+  write("leaf.l", "Lsystem: 1\nAxiom: ~l\nendlsystem\n");
+  write("leaf.v", "surface: l sq.s 1 3 3\n");
+  // A first row of one point: its 4 grid points are one, and the 3 cells
+  // beside it one triangle each.
+  write("sq.s", std::string(kSurfaceHead) + square_patch(true));
+  const Skeleton pointed = interpret(read("leaf.l"));
+  ASSERT_EQ(pointed.sheets.size(), 1U);
+  EXPECT_EQ(pointed.sheets[0].points.size(), 16U - 3U);
+  EXPECT_EQ(pointed.sheets[0].triangles.size(), 18U - 3U);
+  // The same patch twice shares all its points with itself.
+  write("sq.s",
+        std::string(kSurfaceHead) + square_patch(false) + square_patch(false));
+  const Skeleton twice = interpret(read("leaf.l"));
+  ASSERT_EQ(twice.sheets.size(), 1U);
+  EXPECT_EQ(twice.sheets[0].points.size(), 16U);
+  EXPECT_EQ(twice.sheets[0].triangles.size(), 36U);
+}
+
+TEST_F(CpfgFiles, ScalesASurfaceByItsParametersAndDropsAFlatOne) {
+  write("leaf.l", "Lsystem: 1\nAxiom: ~l(1,3)~l(0)\nendlsystem\n");
+  write("leaf.v", "surface: l sq.s 1 1 1\n");
+  write("sq.s", std::string(kSurfaceHead) + square_patch(false));
+  const Skeleton s = interpret(read("leaf.l"));
+  ASSERT_EQ(s.sheets.size(), 1U);
+  EXPECT_EQ(s.degenerate_polygons, 1U);
+  // ~l(1, 3): x by 1, y (along the heading) by 3, z by 1.
+  EXPECT_NEAR(glm::length(s.sheets[0].points.back() - s.sheets[0].points[0]),
+              std::sqrt(1.0 + 9.0), 1e-12);
+}
+
+TEST_F(CpfgFiles, PlacesErrorsInASurfaceFileAndNamesAMissingOne) {
+  write("leaf.l", "Lsystem: 1\nAxiom: ~l\nendlsystem\n");
+  write("leaf.v", "surface: l sq.s 1 3 3\n");
+  write("sq.s", "0 1 0 1 0 0\nCONTACT POINT X: 0 Y: 0\n");
+  EXPECT_EQ(located_error_of([&] { (void)read("leaf.l"); }),
+            "2:25: expected 'Z:'");  // at the end of the file
+  write("sq.s", std::string(kSurfaceHead));
+  EXPECT_EQ(located_error_of([&] { (void)read("leaf.l"); }),
+            "6:9: expected a patch");
+  std::filesystem::remove(dir_ / "sq.s");
+  EXPECT_THROW((void)read("leaf.l"), ParseError);
 }
 
 TEST(Cpfg, RefusesAViewFileForAnotherNotation) {

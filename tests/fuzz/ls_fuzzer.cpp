@@ -39,6 +39,21 @@ void check(const lsys::Skeleton& skeleton) {
       if (!finite(q)) std::abort();
     }
   }
+  for (const lsys::Sphere& b : skeleton.spheres) {
+    if (!finite(b.center) || !(b.diameter >= 0.0)) std::abort();
+  }
+  for (const lsys::Sheet& sheet : skeleton.sheets) {
+    if (sheet.triangles.empty()) std::abort();
+    for (const glm::dvec3& q : sheet.points) {
+      if (!finite(q)) std::abort();
+    }
+    for (const auto& t : sheet.triangles) {
+      for (const std::uint32_t i : t) {
+        if (i >= sheet.points.size()) std::abort();
+      }
+      if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) std::abort();
+    }
+  }
 }
 
 }  // namespace

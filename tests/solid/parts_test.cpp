@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "lsolid/boolean.hpp"
+#include "lsolid/errors.hpp"
 #include "support/mesh_checks.hpp"
 
 namespace lsolid {
@@ -306,6 +307,101 @@ TEST(Parts, KeepsCoplanarPolygonsOfTwoColoursApartWhenSplittingColours) {
                 polygon({{2, 0, 2}, {6, 0, 2}, {6, 0, 6}, {2, 0, 6}}, 2)};
   EXPECT_EQ(build_parts(s, {.split_colors = true}).plates, 2U);
   EXPECT_EQ(build_parts(s, {.split_colors = false}).plates, 1U);
+}
+
+// A sheet on a grid of `columns` × `rows` cells, point (i, j) at
+// at(i / columns, j / rows).
+template <typename At>
+lsys::Sheet grid_sheet(int columns, int rows, const At& at) {
+  lsys::Sheet sheet;
+  for (int j = 0; j <= rows; ++j) {
+    for (int i = 0; i <= columns; ++i) {
+      sheet.points.push_back(
+          at(static_cast<double>(i) / columns, static_cast<double>(j) / rows));
+    }
+  }
+  const auto index = [&](int i, int j) {
+    return static_cast<std::uint32_t>(j * (columns + 1) + i);
+  };
+  for (int j = 0; j < rows; ++j) {
+    for (int i = 0; i < columns; ++i) {
+      sheet.triangles.push_back(
+          {index(i, j), index(i + 1, j), index(i, j + 1)});
+      sheet.triangles.push_back(
+          {index(i + 1, j), index(i + 1, j + 1), index(i, j + 1)});
+    }
+  }
+  return sheet;
+}
+
+TEST(Parts, ThickensAFlatSheetIntoAPlateOfThePlatesThickness) {
+  lsys::Skeleton s;
+  s.sheets = {grid_sheet(4, 4, [](double u, double v) {
+    return glm::dvec3(10.0 * u, 10.0 * v, 3.0);
+  })};
+  const PartSet set = build_parts(s, {.wall_mm = 0.8});
+  ASSERT_EQ(set.parts.size(), 1U);
+  EXPECT_EQ(set.sheets, 1U);
+  EXPECT_EQ(set.hulled_sheets, 0U);
+  expect_printable(set.parts[0].mesh);
+  EXPECT_NEAR(signed_volume(set.parts[0].mesh),
+              100.0 * plate_thickness_mm(0.8, 0.05), 1e-9);
+  const Box box = bounds(set.parts);
+  EXPECT_NEAR(box.max.z - box.min.z, plate_thickness_mm(0.8, 0.05), 1e-12);
+}
+
+TEST(Parts, ThickensACurvedSheetAlongItsNormals) {
+  // Half a cylinder of radius 10 mm, 10 mm long: as thick all round.
+  lsys::Skeleton s;
+  s.sheets = {grid_sheet(16, 4, [](double u, double v) {
+    const double a = std::numbers::pi * u;
+    return glm::dvec3(10.0 * std::cos(a), 10.0 * v, 10.0 * std::sin(a));
+  })};
+  const PartSet set = build_parts(s, {.wall_mm = 0.8});
+  ASSERT_EQ(set.parts.size(), 1U);
+  expect_printable(set.parts[0].mesh);
+  const double chords = 16 * 2.0 * 10.0 * std::sin(std::numbers::pi / 32);
+  EXPECT_NEAR(signed_volume(set.parts[0].mesh),
+              10.0 * chords * plate_thickness_mm(0.8, 0.05),
+              0.01 * 10.0 * chords * plate_thickness_mm(0.8, 0.05));
+}
+
+// A sheet folded into a V of 10° along the y axis, `width` mm each wing.
+lsys::Sheet folded_sheet(double width) {
+  return grid_sheet(8, 2, [&](double u, double v) {
+    const double r = width * std::abs(2.0 * u - 1.0);
+    const double side = u < 0.5 ? -1.0 : 1.0;
+    const double half = 5.0 * std::numbers::pi / 180.0;
+    return glm::dvec3(side * r * std::sin(half), width * v, r * std::cos(half));
+  });
+}
+
+TEST(Parts, MakesASmallSheetFoldedTooSharplyItsThickenedHull) {
+  lsys::Skeleton s;
+  s.sheets = {folded_sheet(2.0)};
+  const PartSet set = build_parts(s, {.wall_mm = 0.8});
+  ASSERT_EQ(set.parts.size(), 1U);
+  EXPECT_EQ(set.hulled_sheets, 1U);
+  expect_printable(set.parts[0].mesh);
+  // The hull holds every point of the sheet, half the thickness clear.
+  const Box box = bounds(set.parts);
+  EXPECT_NEAR(box.max.y - box.min.y, 2.0 + plate_thickness_mm(0.8, 0.05),
+              1e-12);
+}
+
+TEST(Parts, RefusesALargeSheetFoldedTooSharplyToThicken) {
+  lsys::Skeleton s;
+  s.sheets = {folded_sheet(20.0)};
+  try {
+    (void)build_parts(s, {.wall_mm = 0.8});
+    FAIL() << "a sheet folded this sharply cannot be thickened";
+  } catch (const GeometryError& e) {
+    EXPECT_NE(std::string(e.what()).find(
+                  "surface 0 at (-1.743, 0.000, 19.924) mm, 20.0 mm across, "
+                  "bends too sharply to thicken to 0.93 mm"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "lsys/expression.hpp"
 #include "lsys/settings.hpp"
 #include "lsys/source.hpp"
+#include "lsys/surface.hpp"
 #include "lsys/turtle_command.hpp"
 
 namespace lsys {
@@ -160,6 +161,8 @@ struct Grammar {
   /// Things that are legal but probably mistakes (a `--define` the file
   /// never reads), for the caller to show.
   std::vector<std::string> warnings;
+  /// The surfaces of the symbols whose command is TurtleCommand::Surface.
+  std::map<SymbolId, Surface> surfaces;
   /// cpfg's global variables, by slot, and its blocks of statements: once
   /// before the axiom, before and after each step, after the last.
   std::vector<std::string> globals;

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <glm/vec3.hpp>
@@ -42,12 +43,25 @@ struct Sphere {
   std::int32_t parent = -1;
 };
 
+/// A curved leaf or petal from a predefined surface (cpfg's `~l`): a
+/// triangle mesh without thickness, in model units. Its patches share the
+/// points of their common edges; each triangle has three distinct points.
+struct Sheet {
+  std::vector<glm::dvec3> points;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  int color = 0;
+  /// The segment drawn last before it, which it grows from, or -1.
+  std::int32_t parent = -1;
+};
+
 /// The interpretation of a derived string.
 struct Skeleton {
   std::vector<Segment> segments;
   std::vector<Polygon> polygons;
   std::vector<Sphere> spheres;
-  /// Polygons dropped because fewer than 3 distinct points remained.
+  std::vector<Sheet> sheets;
+  /// Polygons dropped because fewer than 3 distinct points remained, and
+  /// surfaces drawn at a scale that leaves them no area.
   std::size_t degenerate_polygons = 0;
   /// `{` never closed by `}` (dropped), and `}` without an open `{`.
   std::size_t unclosed_polygons = 0;
@@ -56,5 +70,12 @@ struct Skeleton {
   /// to move the turtle from where it stands, not drawn.
   std::size_t zero_length_segments = 0;
 };
+
+/// Whether the turtle drew nothing at all: no segment, polygon, sphere or
+/// sheet.
+[[nodiscard]] inline bool draws_nothing(const Skeleton& skeleton) noexcept {
+  return skeleton.segments.empty() && skeleton.polygons.empty() &&
+         skeleton.spheres.empty() && skeleton.sheets.empty();
+}
 
 }  // namespace lsys

@@ -33,6 +33,11 @@ class Turtle {
   [[nodiscard]] const glm::dvec3& left() const noexcept { return left_; }
   [[nodiscard]] const glm::dvec3& up() const noexcept { return up_; }
 
+  /// Puts the turtle at `position` without turning it (cpfg's surfaces
+  /// move it to their end point).
+  void set_position(const glm::dvec3& position) noexcept {
+    position_ = position;
+  }
   /// Moves along the heading (backwards for a negative distance).
   void move(double distance) noexcept { position_ += distance * heading_; }
   /// Rotates about U: positive turns H toward L (`+`).

@@ -47,7 +47,8 @@ enum class TurtleCommand {
   Gravity,         ///< Lparser `t`: pitch down by p × |horizontal heading|
   RollToVerticalSwappingTurns,  ///< Lparser `$`: `$`, then `+` `-` swapped
   ElasticityChange,  ///< cpfg `_`: set the elasticity, or add its increment
-  Sphere,  ///< cpfg `@O(d)`: a ball of diameter d, or of the width, here
+  Sphere,   ///< cpfg `@O(d)`: a ball of diameter d, or of the width, here
+  Surface,  ///< cpfg `~l(s)`: draw a predefined surface (Grammar::surfaces)
 };
 
 /// The command a module name has without aliases, if it has one.

@@ -13,6 +13,7 @@
 
 #include "dialects/c_preprocessor.hpp"
 #include "dialects/cpfg_functions.hpp"
+#include "dialects/cpfg_surface.hpp"
 #include "dialects/cpfg_view.hpp"
 #include "dialects/front_ends.hpp"
 #include "lsys/diagnostic.hpp"
@@ -71,7 +72,7 @@ const std::vector<RefusedName> kRefused = {
     {"@Ts", "the newer tropism model"},
     {"@Ti", "the newer tropism model"},
     {"@Td", "the newer tropism model"},
-    {"~", "a predefined surface"},
+    {"~", "a predefined surface that no surface: line of the view names"},
     {"?", "a sub-L-system call or a query"},
 };
 
@@ -181,6 +182,29 @@ Functions read_functions(const CpfgView& view,
   return out;
 }
 
+// The view file's surfaces, each the module `~` and its one-letter id.
+struct Surfaces {
+  std::vector<std::string> names;  // "~l"
+  std::vector<Surface> meshes;
+};
+
+Surfaces read_surfaces(const CpfgView& view,
+                       const std::filesystem::path& view_path) {
+  Surfaces out;
+  for (const CpfgView::SurfaceLine& line : view.surfaces) {
+    const auto file = load_source(view_path.parent_path() / line.file);
+    check_text(*file);
+    std::string name = "~";
+    name += line.id;
+    out.names.push_back(std::move(name));
+    out.meshes.push_back(read_cpfg_surface(
+        *file,
+        SurfaceOptions{
+            .size = line.size, .s_divisions = line.s, .t_divisions = line.t}));
+  }
+  return out;
+}
+
 }  // namespace
 
 Grammar read_cpfg(std::shared_ptr<const SourceFile> source,
@@ -198,8 +222,13 @@ Grammar read_cpfg(std::shared_ptr<const SourceFile> source,
       preprocess(*source, PreprocessOptions{.defines = options.defines,
                                             .tab_continues = true,
                                             .predefined = functions.names});
+  Surfaces surfaces = view_path ? read_surfaces(view, *view_path) : Surfaces{};
   Draft draft = notation(view);
   draft.functions = functions.table;
+  for (const std::string& name : surfaces.names) {
+    draft.symbols.push_back(
+        SymbolCommand{name, TurtleCommand::Surface, std::nullopt, 3});
+  }
   if (!view_path) {
     draft.warnings.insert(
         draft.warnings.begin(),
@@ -209,6 +238,11 @@ Grammar read_cpfg(std::shared_ptr<const SourceFile> source,
   }
   Grammar grammar = read_ls_lines(std::move(preprocessed), options,
                                   std::move(draft), LsVariant::Cpfg);
+  for (std::size_t i = 0; i < surfaces.names.size(); ++i) {
+    if (const auto symbol = grammar.alphabet.find(surfaces.names[i])) {
+      grammar.surfaces[*symbol] = std::move(surfaces.meshes[i]);
+    }
+  }
   refuse_parameterised_braces(
       grammar,
       "cpfg's '{(n)' (a generalized cylinder) is not supported; write '{' "

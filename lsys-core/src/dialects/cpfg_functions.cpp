@@ -16,6 +16,7 @@
 #include <string>
 #include <string_view>
 
+#include "dialects/word_scanner.hpp"
 #include "lsys/diagnostic.hpp"
 
 namespace lsys::dialects {
@@ -69,10 +70,9 @@ double value_at(const std::vector<Point>& points, double x) {
   return evaluate(points, 0.5 * (lo + hi)).y;
 }
 
-class FunctionReader {
+class FunctionReader : WordScanner {
  public:
-  explicit FunctionReader(const SourceFile& file)
-      : file_(file), text_(file.text()) {}
+  explicit FunctionReader(const SourceFile& file) : WordScanner(file) {}
 
   std::vector<CpfgFunction> run() {
     std::vector<CpfgFunction> out;
@@ -91,32 +91,6 @@ class FunctionReader {
   }
 
  private:
-  [[noreturn]] void fail(std::string message) const {
-    throw error_at(file_, std::min(pos_, text_.size()), std::move(message));
-  }
-
-  void skip_blanks() {
-    while (pos_ < text_.size() &&
-           std::isspace(static_cast<unsigned char>(text_[pos_])) != 0) {
-      ++pos_;
-    }
-  }
-
-  std::string_view word() {
-    skip_blanks();
-    const std::size_t at = pos_;
-    while (pos_ < text_.size() &&
-           std::isspace(static_cast<unsigned char>(text_[pos_])) == 0) {
-      ++pos_;
-    }
-    return text_.substr(at, pos_ - at);
-  }
-
-  bool word_is(std::string_view w) {
-    skip_blanks();
-    return text_.substr(pos_).starts_with(w);
-  }
-
   void expect(std::string_view w) {
     if (word() != w) fail("expected '" + std::string(w) + "'");
   }
@@ -133,18 +107,6 @@ class FunctionReader {
            std::to_string(least) + " to " + std::to_string(most));
     }
     return static_cast<int>(value);
-  }
-
-  double number() {
-    skip_blanks();
-    double value = 0.0;
-    const char* first = text_.data() + pos_;
-    const auto [ptr, ec] =
-        std::from_chars(first, text_.data() + text_.size(), value);
-    if (ec != std::errc() || ptr == first || !std::isfinite(value))
-      fail("expected a number");
-    pos_ = static_cast<std::size_t>(ptr - text_.data());
-    return value;
   }
 
   // The rest of the line, after `name:`.
@@ -207,10 +169,6 @@ class FunctionReader {
     }
     return f;
   }
-
-  const SourceFile& file_;
-  std::string_view text_;
-  std::size_t pos_ = 0;
 };
 
 }  // namespace

@@ -202,6 +202,28 @@ class ViewReader {
       view_.elasticity = number(v, end);
     } else if (label == "elasticity increment") {
       view_.elasticity_increment = number(v, end);
+    } else if (label == "surface") {
+      // `surface: l leaf.s 1 8 4`, or `surface: leaf.s …`, whose id is the
+      // file name's first letter.
+      CpfgView::SurfaceLine line;
+      std::string_view first = file_name(v, end);
+      if (first.size() == 1) {
+        line.id = first.front();
+        first = file_name(v, end);
+      } else if (!first.empty()) {
+        line.id = first.front();
+      }
+      if (first.empty()) fail(colon + 1, "expected a surface file");
+      line.file = std::string(first);
+      skip_blanks(v, end);
+      if (v < end) line.size = number(v, end);
+      skip_blanks(v, end);
+      if (v < end) line.s = static_cast<int>(number(v, end));
+      skip_blanks(v, end);
+      if (v < end) line.t = static_cast<int>(number(v, end));
+      // One number after the size is a texture, not a division.
+      if (line.t == 0) line.s = 0;
+      view_.surfaces.push_back(std::move(line));
     } else if (label == "function" || label == "function set") {
       std::size_t k = v;
       const std::string_view file = file_name(k, end);
@@ -211,10 +233,10 @@ class ViewReader {
       } else {
         view_.function_set = std::string(file);
       }
-    } else if (label == "surface" || label == "tropism" || label == "torque" ||
-               label == "curve" || label == "scale multiplier" ||
+    } else if (label == "tropism" || label == "torque" || label == "curve" ||
+               label == "scale multiplier" ||
                label == "interpretation past %") {
-      // What uses them (`~`, `@Ts`, curveX, `@Di`) is refused where the
+      // What uses them (`@Ts`, curveX, `@Di`) is refused where the
       // L-system writes it.
     } else {
       for (std::string_view known : kViewOnly) {

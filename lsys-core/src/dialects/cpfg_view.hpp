@@ -27,6 +27,16 @@ struct CpfgView {
   std::optional<glm::dvec3> tropism_direction;  ///< in cpfg's frame, Y up
   std::optional<double> elasticity;             ///< `initial elasticity`
   std::optional<double> elasticity_increment;
+  /// A `surface:` line: `~id` draws the file, `size` model units for its
+  /// SIZE, meshed s × t per patch (0: the file's own).
+  struct SurfaceLine {
+    char id = 0;
+    std::string file;
+    double size = 1.0;
+    int s = 0;
+    int t = 0;
+  };
+  std::vector<SurfaceLine> surfaces;
   /// `function:` files in order (func's ids from 1), or a `function set:`.
   std::vector<std::string> functions;
   std::string function_set;

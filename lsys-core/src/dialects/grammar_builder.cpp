@@ -515,9 +515,9 @@ class GrammarBuilder : TextScan {
     for (const auto& [id, refused] : refused_) {
       // A one-character refused name that is a name's prefix refuses it
       // too: a predecessor `~f(t)` names cpfg's surface `~` with `f`.
-      const bool prefix = refused->name.size() == 1 &&
-                          !is_word_char(refused->name.front()) &&
-                          name.starts_with(refused->name);
+      const bool prefix =
+          refused->name.size() == 1 && !is_word_char(refused->name.front()) &&
+          name.starts_with(refused->name) && !notation_command(name);
       if (id != symbol && !prefix) continue;
       std::string message = "'";
       message += refused->name;

@@ -46,6 +46,11 @@ struct PartSet {
   std::size_t plates = 0;
   /// Balls of `@O`.
   std::size_t spheres = 0;
+  /// Predefined surfaces (cpfg's `~l`), each thickened as a plate is.
+  std::size_t sheets = 0;
+  /// Of those, sheets a few walls across too bent to thicken cleanly, made
+  /// the convex hull of their thickened points instead.
+  std::size_t hulled_sheets = 0;
   /// Polygons without area or whose outline crosses itself: not printed.
   std::size_t skipped_polygons = 0;
 };
@@ -59,7 +64,12 @@ struct PartSet {
 /// Elsewhere a joint sphere encloses the tubes' end caps for the union to
 /// merge. Each polygon becomes a plate a little thicker than the wall
 /// (coplanar polygons that overlap or share edges are united first), fused
-/// by a joint to the segment it grows from.
+/// by a joint to the segment it grows from. Each sheet becomes a plate as
+/// thick, offset along the sheet's normals (or its mean normal); a sheet a
+/// few walls across that bends too sharply for that becomes the convex
+/// hull of its thickened points.
+/// @throws GeometryError for a sheet that cannot be thickened without
+/// cutting itself.
 [[nodiscard]] PartSet build_parts(const lsys::Skeleton& skeleton,
                                   const PartOptions& options = {});
 

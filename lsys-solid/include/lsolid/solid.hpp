@@ -78,6 +78,7 @@ struct SolidReport {
   std::size_t joints = 0;
   std::size_t plates = 0;
   std::size_t spheres = 0;  ///< balls of `@O`
+  std::size_t sheets = 0;   ///< predefined surfaces (`~l`), thickened
   std::size_t skipped_polygons = 0;
   lsys::Skeleton dropped;  ///< only the counts of what the turtle dropped
   double mm_per_unit = 1.0;

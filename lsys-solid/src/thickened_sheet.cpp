@@ -1,0 +1,184 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// A leaf from cpfg's Bézier surfaces is a curved sheet without thickness.
+// United as one plate per triangle (as polygons are), neighbouring plates
+// meet at small dihedral angles in thin wedges, which the exact union turns
+// into slivers and rounding back to doubles folds: a single 8 × 4 leaf
+// crashed CGAL's corefinement. Offsetting the whole sheet along its normals
+// gives one closed part instead, with no faces that meet face on face.
+#include "thickened_sheet.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <glm/geometric.hpp>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace lsolid {
+namespace {
+
+using Triangle = std::array<std::uint32_t, 3>;
+
+// A sweep along a direction this slanted to some triangle (75.5°) would
+// have to be four times the thickness.
+constexpr double kSteepestSweep = 0.25;
+
+// The triangles flipped where needed so that every edge two triangles share
+// runs one way in one and the other way in the other. False if no such
+// choice exists or an edge has more than two triangles.
+bool orient(std::vector<Triangle>& triangles) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::size_t>>
+      edges;
+  for (std::size_t f = 0; f < triangles.size(); ++f) {
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = triangles[f][k];
+      const std::uint32_t b = triangles[f][(k + 1) % 3];
+      auto& faces = edges[{std::min(a, b), std::max(a, b)}];
+      faces.push_back(f);
+      if (faces.size() > 2) return false;
+    }
+  }
+  // Whether f runs from a to b.
+  const auto runs = [&](std::size_t f, std::uint32_t a, std::uint32_t b) {
+    for (int k = 0; k < 3; ++k) {
+      if (triangles[f][k] == a && triangles[f][(k + 1) % 3] == b) return true;
+    }
+    return false;
+  };
+  std::vector<int> state(triangles.size(), 0);  // 0 unseen, 1 kept, 2 done
+  for (std::size_t start = 0; start < triangles.size(); ++start) {
+    if (state[start] != 0) continue;
+    state[start] = 1;
+    std::deque<std::size_t> queue{start};
+    while (!queue.empty()) {
+      const std::size_t f = queue.front();
+      queue.pop_front();
+      for (int k = 0; k < 3; ++k) {
+        const std::uint32_t a = triangles[f][k];
+        const std::uint32_t b = triangles[f][(k + 1) % 3];
+        for (const std::size_t g : edges[{std::min(a, b), std::max(a, b)}]) {
+          if (g == f) continue;
+          const bool agrees = runs(g, b, a);
+          if (state[g] != 0) {
+            if (!agrees) return false;  // one-sided: a Möbius band
+            continue;
+          }
+          if (!agrees) std::swap(triangles[g][1], triangles[g][2]);
+          state[g] = 1;
+          queue.push_back(g);
+        }
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+std::optional<TriangleMesh> thicken_sheet(const lsys::Sheet& sheet,
+                                          double thickness_mm,
+                                          SheetOffset offset_along) {
+  std::vector<Triangle> triangles = sheet.triangles;
+  if (triangles.empty() || !orient(triangles)) return std::nullopt;
+  const std::size_t count = sheet.points.size();
+  std::vector<bool> used(count, false);
+  for (const Triangle& t : triangles) {
+    for (const std::uint32_t i : t) used[i] = true;
+  }
+  // Normals at the points weighted by each triangle's angle there
+  // (Thürrner and Wüthrich 1998): they do not change when a triangle is
+  // cut in two. Their sum, weighted by area, is the sheet's mean normal.
+  std::vector<glm::dvec3> normal(count, glm::dvec3(0.0));
+  std::vector<glm::dvec3> face_normal;
+  face_normal.reserve(triangles.size());
+  glm::dvec3 mean(0.0);
+  for (const Triangle& t : triangles) {
+    const glm::dvec3 n = glm::cross(sheet.points[t[1]] - sheet.points[t[0]],
+                                    sheet.points[t[2]] - sheet.points[t[0]]);
+    const double area = glm::length(n);
+    mean += n;
+    face_normal.push_back(area > 0.0 ? n / area : glm::dvec3(0.0));
+    for (int k = 0; k < 3; ++k) {
+      const glm::dvec3 p = sheet.points[t[k]];
+      const glm::dvec3 u = sheet.points[t[(k + 1) % 3]] - p;
+      const glm::dvec3 v = sheet.points[t[(k + 2) % 3]] - p;
+      const double angle =
+          std::atan2(glm::length(glm::cross(u, v)), glm::dot(u, v));
+      normal[t[k]] += angle * face_normal.back();
+    }
+  }
+  std::vector<double> offset(count, thickness_mm / 2.0);
+  if (offset_along == SheetOffset::Normals) {
+    for (std::size_t i = 0; i < count; ++i) {
+      if (!used[i]) continue;  // remove_unused_vertices drops it below
+      const double length = glm::length(normal[i]);
+      if (!(length > 1e-9)) return std::nullopt;
+      normal[i] /= length;
+    }
+    // Half the thickness from each triangle the point is on: more than
+    // half along the point's normal where the sheet bends (at most twice,
+    // where it bends by 60°).
+    for (std::size_t f = 0; f < triangles.size(); ++f) {
+      for (const std::uint32_t i : triangles[f]) {
+        const double c = std::max(0.5, glm::dot(normal[i], face_normal[f]));
+        offset[i] = std::max(offset[i], thickness_mm / 2.0 / c);
+      }
+    }
+  } else {
+    // One direction for all: the plate is the sheet swept along it, which
+    // cuts itself only if the sheet overlaps itself seen along it. Where
+    // the sheet slants to it, the sweep must be longer to stay as thick.
+    const double length = glm::length(mean);
+    if (!(length > 0.0)) return std::nullopt;
+    const glm::dvec3 d = mean / length;
+    double least = 1.0;
+    for (const glm::dvec3& n : face_normal) {
+      least = std::min(least, glm::dot(n, d));
+    }
+    if (!(least >= kSteepestSweep)) return std::nullopt;
+    std::fill(normal.begin(), normal.end(), d);
+    std::fill(offset.begin(), offset.end(), thickness_mm / 2.0 / least);
+  }
+  TriangleMesh mesh;
+  mesh.vertices.reserve(2 * count);
+  for (std::size_t i = 0; i < count; ++i) {
+    mesh.vertices.push_back(sheet.points[i] - offset[i] * normal[i]);
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    mesh.vertices.push_back(sheet.points[i] + offset[i] * normal[i]);
+  }
+  const auto top = static_cast<std::uint32_t>(count);
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
+  for (const Triangle& t : triangles) {
+    mesh.triangles.push_back({t[0] + top, t[1] + top, t[2] + top});
+    mesh.triangles.push_back({t[0], t[2], t[1]});
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t a = t[k];
+      const std::uint32_t b = t[(k + 1) % 3];
+      ++uses[{std::min(a, b), std::max(a, b)}];
+    }
+  }
+  // The wall: each boundary edge i → j of the top face, whose bottom copy
+  // runs j → i, closed by a quad i, j, j', i'.
+  for (const Triangle& t : triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t i = t[k];
+      const std::uint32_t j = t[(k + 1) % 3];
+      if (uses[{std::min(i, j), std::max(i, j)}] != 1) continue;
+      mesh.triangles.push_back({i, j, j + top});
+      mesh.triangles.push_back({i, j + top, i + top});
+    }
+  }
+  remove_unused_vertices(mesh);
+  // The orientation chosen may face inward: turn it out.
+  if (signed_volume(mesh) < 0.0) {
+    for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
+  }
+  return mesh;
+}
+
+}  // namespace lsolid

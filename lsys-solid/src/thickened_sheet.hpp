@@ -1,0 +1,36 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <optional>
+
+#include "lsolid/mesh.hpp"
+#include "lsys/skeleton.hpp"
+
+namespace lsolid {
+
+/// Which way a sheet's points move when it is thickened.
+enum class SheetOffset {
+  /// Along the sheet's normal at each point: a plate of even thickness,
+  /// which cuts itself where the sheet bends sharply for its thickness.
+  Normals,
+  /// All along the sheet's mean normal: the sheet swept along one
+  /// direction, thicker where it slants to it, and cutting itself only if
+  /// it overlaps itself seen along that direction.
+  MeanNormal,
+};
+
+/// A sheet (a curved leaf from a predefined surface) thickened to a closed
+/// solid: each point moved to either side, far enough that each triangle's
+/// copies lie half of `thickness_mm` from it, the two faces joined by a
+/// wall along the sheet's boundary. Returns nothing when the sheet has no
+/// consistent two sides (an edge that three triangles share, a twisted
+/// band), a point without a normal (triangles folded back onto each other
+/// there), or, along the mean normal, a triangle slanted by more than 75°
+/// to it. The result is closed and outward-oriented; whether it cuts
+/// itself is for the caller to check.
+/// @pre the sheet's triangles have three distinct points each.
+[[nodiscard]] std::optional<TriangleMesh> thicken_sheet(
+    const lsys::Sheet& sheet, double thickness_mm, SheetOffset offset_along);
+
+}  // namespace lsolid

@@ -26,6 +26,14 @@
 namespace lsys {
 namespace {
 
+// Sides of a disc: its corners stand out 0.2% of its radius (0.05 mm on a
+// disc 46 mm across).
+constexpr int kDiscSides = 48;
+
+// More pieces than this in one span of a generalized cylinder would only
+// cost time: cpfg's own views use up to 20.
+constexpr int kMostCylinderPieces = 256;
+
 bool is_one_of(TurtleCommand command,
                std::initializer_list<TurtleCommand> commands) {
   return std::find(commands.begin(), commands.end(), command) != commands.end();
@@ -95,6 +103,16 @@ struct TurtleState {
   std::int32_t last_segment = -1;
   bool turns_swapped = false;  // Fractint's `!`
   double gravity = 0.2;        // Lparser's `t`, in radians
+  // cpfg's generalized cylinder: whether one is open, its last control
+  // point, and the factors of its tangents (cpfg's interpret.c: 1.2).
+  bool in_cylinder = false;
+  glm::dvec3 cylinder_point{0.0};
+  glm::dvec3 cylinder_heading{0.0};
+  double cylinder_width = 0.0;
+  // The segment the next span continues: its last, or at `@Gs` the one
+  // drawn last (the `f` between control points does not break the tube).
+  std::int32_t cylinder_parent = -1;
+  std::array<double, 2> tangent_factors{1.2, 1.2};
 };
 
 class Interpreter {
@@ -219,6 +237,101 @@ class Interpreter {
     }
     sheet.triangles = surface.triangles;
     skeleton_.sheets.push_back(std::move(sheet));
+  }
+
+  // A disc as a polygon of kDiscSides whose sides touch the circle, as a
+  // tube's sides touch its own: never narrower than asked. Of diameter 0
+  // it is dropped and counted with the degenerate polygons.
+  void draw_disc(TurtleCommand command, double diameter) {
+    if (!(diameter > 0.0)) {
+      ++skeleton_.degenerate_polygons;
+      return;
+    }
+    const Turtle& turtle = state_.turtle;
+    glm::dvec3 a(1.0, 0.0, 0.0);
+    glm::dvec3 b(0.0, 0.0, 1.0);  // cpfg's x and y are lsolid's x and z
+    if (command == TurtleCommand::DiscAcrossUp) {
+      a = turtle.heading();
+      b = turtle.left();
+    } else if (command == TurtleCommand::DiscAcrossHeading) {
+      a = turtle.left();
+      b = turtle.up();
+    } else if (command == TurtleCommand::DiscAcrossLeft) {
+      a = turtle.heading();
+      b = turtle.up();
+    }
+    const double r = diameter / 2.0 / std::cos(std::numbers::pi / kDiscSides);
+    Polygon disc{.color = state_.color, .parent = state_.last_segment};
+    for (int k = 0; k < kDiscSides; ++k) {
+      const double t = 2.0 * std::numbers::pi * k / kDiscSides;
+      disc.points.push_back(turtle.position() +
+                            r * (std::cos(t) * a + std::sin(t) * b));
+      if (!std::isfinite(glm::length(disc.points.back()))) {
+        throw error_at(*grammar_.source,
+                       place_of(
+                           grammar_, {command},
+                           [](double v) { return std::fabs(v) > 1e100; },
+                           grammar_.axiom_offset),
+                       "a disc this large overflows: its points are no "
+                       "longer finite numbers");
+      }
+      if (k > 0 && disc.points[k] == disc.points[k - 1]) {
+        ++skeleton_.degenerate_polygons;  // too small for the doubles
+        return;
+      }
+    }
+    skeleton_.polygons.push_back(std::move(disc));
+  }
+
+  void set_cylinder_point(std::uint32_t generation) {
+    state_.in_cylinder = true;
+    state_.cylinder_point = state_.turtle.position();
+    state_.cylinder_heading = state_.turtle.heading();
+    state_.cylinder_width = generation_width(state_.width, generation);
+  }
+
+  // The span of a generalized cylinder from its last control point to the
+  // turtle, as cpfg's general.c draws it: a cubic Hermite curve whose
+  // tangents are the headings at both ends times the chord's length and
+  // the `@Gt` factors, cut into `pieces` segments whose widths go linearly
+  // from one end's to the other's (cpfg's default radius tangents). A
+  // chord under 10⁻⁵ draws nothing, as in cpfg.
+  void draw_cylinder_span(int pieces, std::uint32_t generation) {
+    const glm::dvec3 p1 = state_.cylinder_point;
+    const glm::dvec3 p2 = state_.turtle.position();
+    const double length = glm::length(p2 - p1);
+    if (!(length >= 1e-5)) return;
+    const glm::dvec3 t1 =
+        state_.cylinder_heading * (length * state_.tangent_factors[0]);
+    const glm::dvec3 t2 =
+        state_.turtle.heading() * (length * state_.tangent_factors[1]);
+    const double w1 = state_.cylinder_width;
+    const double w2 = generation_width(state_.width, generation);
+    state_.last_segment = state_.cylinder_parent;
+    glm::dvec3 from = p1;
+    for (int k = 1; k <= pieces; ++k) {
+      const double t = static_cast<double>(k) / pieces;
+      const double t2x = t * t;
+      const double t3x = t2x * t;
+      const glm::dvec3 to =
+          k == pieces
+              ? p2
+              : (2 * t3x - 3 * t2x + 1) * p1 + (t3x - 2 * t2x + t) * t1 +
+                    (-2 * t3x + 3 * t2x) * p2 + (t3x - t2x) * t2;
+      if (!std::isfinite(glm::length(to))) {
+        state_.turtle.set_position(to);
+        check_finite();  // throws: the curve left the doubles
+      }
+      if (to == from) continue;
+      const double a = static_cast<double>(k - 1) / pieces;
+      skeleton_.segments.push_back(Segment{from, to, w1 + (w2 - w1) * a,
+                                           w1 + (w2 - w1) * t, state_.color,
+                                           state_.last_segment});
+      state_.last_segment =
+          static_cast<std::int32_t>(skeleton_.segments.size() - 1);
+      from = to;
+    }
+    state_.cylinder_parent = state_.last_segment;
   }
 
   double angle(std::span<const double> params) const {
@@ -394,6 +507,42 @@ class Interpreter {
         }
         return;
       }
+      case TurtleCommand::DiscAcrossUp:
+      case TurtleCommand::DiscAcrossHeading:
+      case TurtleCommand::DiscAcrossLeft:
+      case TurtleCommand::DiscFacingViewer:
+        draw_disc(command,
+                  params.empty()
+                      ? state_.width
+                      : params[0] * settings_.sphere_diameter_per_parameter);
+        return;
+      case TurtleCommand::CylinderStart:
+        set_cylinder_point(generation);
+        state_.cylinder_parent = state_.last_segment;
+        return;
+      case TurtleCommand::CylinderPoint:
+      case TurtleCommand::CylinderEnd: {
+        // cpfg's blackbox.c: n pieces, at least 1; without a parameter, 1.
+        const double pieces = params.empty() ? 1.0 : params[0];
+        // Without `@Gs` cpfg starts a cylinder here (continue_spline).
+        if (!state_.in_cylinder) state_.cylinder_parent = state_.last_segment;
+        if (state_.in_cylinder) {
+          draw_cylinder_span(
+              pieces >= kMostCylinderPieces
+                  ? kMostCylinderPieces
+                  : std::max(
+                        1, static_cast<int>(std::isnan(pieces) ? 1.0 : pieces)),
+              generation);
+        }
+        set_cylinder_point(generation);
+        if (command == TurtleCommand::CylinderEnd) state_.in_cylinder = false;
+        return;
+      }
+      case TurtleCommand::CylinderTangents:
+        if (params.empty()) return;
+        state_.tangent_factors = {params[0],
+                                  params.size() > 1 ? params[1] : params[0]};
+        return;
       case TurtleCommand::ElasticityChange:
         state_.elasticity =
             params.empty() ? state_.elasticity + settings_.elasticity_increment
@@ -511,7 +660,9 @@ class Interpreter {
     // moves it nowhere: no segment, as for F(0) (found by ls_fuzzer).
     const bool moved = length != 0.0 && turtle.position() != p0;
     if (!moved) ++skeleton_.zero_length_segments;
-    if (moved) {
+    // Inside a generalized cylinder `F` only moves (cpfg's start_spline:
+    // "not to interpret f and F"); the cylinder draws the curve.
+    if (moved && !state_.in_cylinder) {
       skeleton_.segments.push_back(
           Segment{p0, turtle.position(), start,
                   generation_width(state_.width, generation) * scale,

@@ -64,6 +64,10 @@ int max_parameters(TurtleCommand command) noexcept {
     case TurtleCommand::SetTropism:
     case TurtleCommand::Surface:
       return 3;
+    case TurtleCommand::CylinderTangents:
+      return 2;
+    case TurtleCommand::CylinderStart:
+      return 0;
     case TurtleCommand::TurnAround:
     case TurtleCommand::RollToVertical:
     case TurtleCommand::RollToVerticalSwappingTurns:
@@ -84,6 +88,7 @@ int min_parameters(TurtleCommand command) noexcept {
     case TurtleCommand::SetTropism:
       return 3;
     case TurtleCommand::SetElasticity:
+    case TurtleCommand::CylinderTangents:
       return 1;
     default:
       return 0;

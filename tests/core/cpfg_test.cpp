@@ -246,14 +246,68 @@ TEST(Cpfg, DrawsASphereOfTheWidthOrOfTheDiameterGiven) {
   EXPECT_EQ(s.spheres[0].center, s.segments[0].p1);
 }
 
+TEST(Cpfg, DrawsDiscsAcrossUpOrFacingTheViewer) {
+  // blackbox.c: `@c` lies in the turtle's heading–left plane, `@o` faces
+  // the viewer on cpfg's z axis (lsolid's y); without a parameter, of the
+  // line width.
+  const Skeleton s =
+      interpret(cpfg("Lsystem: 1\nAxiom: !(0.5)F&(90)@c(2)@o@c(0)\n"
+                     "endlsystem\n"));
+  ASSERT_EQ(s.polygons.size(), 2U);
+  const glm::dvec3 tip = s.segments[0].p1;
+  testing::expect_disc(s.polygons[0], tip, glm::dvec3(0, 0, 1), 2.0);
+  testing::expect_disc(s.polygons[1], tip, glm::dvec3(0, 1, 0),
+                       s.segments[0].end_diameter);
+  EXPECT_EQ(s.polygons[0].parent, 0);
+  EXPECT_EQ(s.degenerate_polygons, 1U);  // the disc of diameter 0
+}
+
+TEST(Cpfg, DrawsAGeneralizedCylinderInPiecesAlongItsHermiteCurve) {
+  // Straight: its pieces on the axis, chained, `F` inside drawing none.
+  const Skeleton line =
+      interpret(cpfg("Lsystem: 1\nAxiom: @Gs F(2) @Gc(4) f(2) @Ge(2)\n"
+                     "endlsystem\n"));
+  ASSERT_EQ(line.segments.size(), 6U);
+  EXPECT_EQ(line.segments[0].p0, glm::dvec3(0, 0, 0));
+  EXPECT_EQ(line.segments[5].p1, glm::dvec3(0, 0, 4));
+  for (std::size_t i = 0; i < 6; ++i) {
+    EXPECT_EQ(line.segments[i].p1.x, 0.0);
+    EXPECT_EQ(line.segments[i].parent, static_cast<std::int32_t>(i) - 1);
+  }
+  // Turned by 90° between the ends: the heading (0, 0, 1) and then the
+  // first left (-1, 0, 0), times the chord 1 and cpfg's factor 1.2, make
+  // the middle of the curve (p1 + p2) / 2 + (t1 - t2) / 8.
+  const Skeleton bent =
+      interpret(cpfg("Lsystem: 1\nAxiom: !(2)@Gs +(90) f(1) !(4)@Ge(2)\n"
+                     "endlsystem\n"));
+  ASSERT_EQ(bent.segments.size(), 2U);
+  EXPECT_NEAR(bent.segments[0].p1.x, -0.5 + 1.2 / 8, 1e-12);
+  EXPECT_NEAR(bent.segments[0].p1.y, 0.0, 1e-12);
+  EXPECT_NEAR(bent.segments[0].p1.z, 1.2 / 8, 1e-12);
+  // Widths go linearly from one control point's to the other's.
+  const double w = bent.segments[0].start_diameter;
+  EXPECT_DOUBLE_EQ(bent.segments[0].end_diameter, 1.5 * w);
+  EXPECT_DOUBLE_EQ(bent.segments[1].end_diameter, 2.0 * w);
+  // `@Gt(0)`: no tangents, a straight chord.
+  const Skeleton chord = interpret(
+      cpfg("Lsystem: 1\nAxiom: @Gt(0)@Gs +(90) f(1) @Ge(2)\nendlsystem\n"));
+  ASSERT_EQ(chord.segments.size(), 2U);
+  EXPECT_NEAR(chord.segments[0].p1.x, -0.5, 1e-12);
+  EXPECT_NEAR(chord.segments[0].p1.z, 0.0, 1e-12);
+}
+
 TEST(Cpfg, RefusesWhatLsolidCannotDrawByNameAtItsPlace) {
   EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: F~l(2)\n"),
             "2:9: '~' (a predefined surface that no surface: line of the "
             "view names) is not supported by lsolid");
-  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: F\nF --> F@o(2)\n"),
-            "3:8: '@o' (a disc) is not supported by lsolid");
-  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: @Gs F @Ge(3)\n"),
-            "2:8: '@Gs' (a generalized cylinder) is not supported by lsolid");
+  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: F\nF --> F@bo(2)\n"),
+            "3:8: '@bo' (a circle) is not supported by lsolid");
+  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: @Gs @Gr(0,1) F @Ge(3)\n"),
+            "2:12: '@Gr' (a generalized cylinder's radius tangents) is not "
+            "supported by lsolid");
+  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: @#(1) @Gs F @Ge(3)\n"),
+            "2:8: '@#' (a contour, a cross-section other than the circle) "
+            "is not supported by lsolid");
   EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: A\nA > ?P(x,y) --> B\n"),
             "3:5: '?' (a sub-L-system call or a query) is not supported by "
             "lsolid");

@@ -199,9 +199,20 @@ TEST(Lowclouds, DrawsASphereOneAcrossUnlessTold) {
   EXPECT_EQ(s.spheres[1].parent, 1);
 }
 
+TEST(Lowclouds, DrawsADiscOneAcrossUnlessToldInTheHeadingUpPlane) {
+  // turtle3d.js: drawDisc(d = 1), turned so that its normal is left.
+  const Skeleton s =
+      interpret(lowclouds("derivation length: 1\naxiom: F@o@o(3)\n"));
+  ASSERT_EQ(s.polygons.size(), 2U);
+  const glm::dvec3 tip = s.segments[0].p1;
+  // The turtle's first left is (-1, 0, 0).
+  testing::expect_disc(s.polygons[0], tip, glm::dvec3(1, 0, 0), 1.0);
+  testing::expect_disc(s.polygons[1], tip, glm::dvec3(1, 0, 0), 3.0);
+}
+
 TEST(Lowclouds, RefusesWhatItCannotBuildByName) {
-  EXPECT_EQ(lowclouds_error("derivation length: 1\naxiom: F@o(2)\n"),
-            "2:9: '@o' (a circle) is not supported by lsolid");
+  EXPECT_EQ(lowclouds_error("derivation length: 1\naxiom: F@c(2)\n"),
+            "2:9: '@c' (a circle) is not supported by lsolid");
   EXPECT_EQ(lowclouds_error("derivation length: 1\naxiom: F@m(0,0,1)F\n"),
             "2:9: '@m' (a move to a point) is not supported by "
             "lsolid");

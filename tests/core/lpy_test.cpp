@@ -134,9 +134,21 @@ TEST(Lpy, DrawsSpheresByTheirRadius) {
   EXPECT_DOUBLE_EQ(s.spheres[1].diameter, 4.0);
 }
 
+TEST(Lpy, DrawsCirclesByTheirRadiusAcrossTheHeading) {
+  // PlantGL's turtle: a disc across the heading, of the width without a
+  // radius.
+  const Skeleton s = drawn("F@o(0.5)+(90)Circle");
+  ASSERT_EQ(s.polygons.size(), 2U);
+  const glm::dvec3 tip = s.segments[0].p1;
+  testing::expect_disc(s.polygons[0], tip, glm::dvec3(0, 0, 1), 1.0);
+  // Turned by 90°, the heading is the first left, (-1, 0, 0).
+  testing::expect_disc(s.polygons[1], tip, glm::dvec3(1, 0, 0),
+                       s.segments[0].end_diameter);
+}
+
 TEST(Lpy, RefusesModulesItCannotBuildByTheirWholeName) {
-  EXPECT_EQ(located_error_of([] { (void)drawn("F@o(0.5)"); }),
-            "1:9: '@o' (a circle) is not supported by lsolid");
+  EXPECT_EQ(located_error_of([] { (void)drawn("F@B(0.5)"); }),
+            "1:9: '@B' (a box) is not supported by lsolid");
   EXPECT_EQ(located_error_of([] { (void)drawn("F~l(2)"); }),
             "1:9: '~' (a predefined surface) is not supported by lsolid");
   // @Gc and @Ge are whole modules, never @, G and c.

@@ -2,7 +2,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <gtest/gtest.h>
+
+#include <cmath>
 #include <filesystem>
+#include <glm/geometric.hpp>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -62,6 +67,21 @@ std::string located_error_of(const Work& work) {
 /// The full diagnostic `line:column: message` that parsing raises.
 inline std::string located_error(std::string_view text) {
   return located_error_of([&] { (void)parse(text); });
+}
+
+/// Expects `disc` to be the polygon of a disc of `diameter` about `center`
+/// across `normal` (a unit vector): its corners in that plane, all at the
+/// same distance, whose sides touch the circle.
+inline void expect_disc(const Polygon& disc, const glm::dvec3& center,
+                        const glm::dvec3& normal, double diameter) {
+  ASSERT_GE(disc.points.size(), 3U);
+  const double corner =
+      diameter / 2.0 /
+      std::cos(std::numbers::pi / static_cast<double>(disc.points.size()));
+  for (const glm::dvec3& p : disc.points) {
+    EXPECT_NEAR(glm::dot(p - center, normal), 0.0, 1e-12);
+    EXPECT_NEAR(glm::length(p - center), corner, 1e-12);
+  }
 }
 
 }  // namespace lsys::testing

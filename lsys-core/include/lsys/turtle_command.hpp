@@ -49,6 +49,22 @@ enum class TurtleCommand {
   ElasticityChange,  ///< cpfg `_`: set the elasticity, or add its increment
   Sphere,   ///< cpfg `@O(d)`: a ball of diameter d, or of the width, here
   Surface,  ///< cpfg `~l(s)`: draw a predefined surface (Grammar::surfaces)
+  /// A disc of diameter d (or of the width) centred on the turtle, a leaf
+  /// polygon: cpfg's `@c` across up (in the heading–left plane)...
+  DiscAcrossUp,
+  DiscAcrossHeading,  ///< ...L-Py's `@o(r)`, across the heading...
+  DiscAcrossLeft,     ///< ...L-system Explorer's `@o(d)`, across left...
+  /// ...and cpfg's `@o`, a "two-dimensional" circle that faces cpfg's
+  /// viewer on its z axis: across lsolid's y.
+  DiscFacingViewer,
+  /// cpfg's generalized cylinder: `@Gs` starts a smooth tube at the turtle,
+  /// `@Gc(n)` adds a control point and draws the span to it in n pieces
+  /// along a Hermite curve, `@Ge(n)` adds the last; `F` between them moves
+  /// without drawing. `@Gt(a, b)` sets the tangents' factors.
+  CylinderStart,
+  CylinderPoint,
+  CylinderEnd,
+  CylinderTangents,
 };
 
 /// The command a module name has without aliases, if it has one.

@@ -34,12 +34,19 @@ const std::vector<SymbolCommand> kSymbols = [] {
           {"_", TurtleCommand::ElasticityChange, std::nullopt, 1},
           // A sphere of the width, or of the diameter given.
           {"@O", TurtleCommand::Sphere, std::nullopt, 1},
+          // Generalized cylinders, with round cross-sections (general.c).
+          {"@Gs", TurtleCommand::CylinderStart, std::nullopt, 0},
+          {"@Gc", TurtleCommand::CylinderPoint, std::nullopt, 1},
+          {"@Ge", TurtleCommand::CylinderEnd, std::nullopt, 1},
+          {"@Gt", TurtleCommand::CylinderTangents, std::nullopt, 2},
+          // Discs of the width, or of the diameter given (blackbox.c).
+          {"@c", TurtleCommand::DiscAcrossUp, std::nullopt, 1},
+          {"@o", TurtleCommand::DiscFacingViewer, std::nullopt, 1},
           // The end of a sub-L-system (whose call `?` is refused); no drawing.
           {"$", TurtleCommand::None, std::nullopt, std::nullopt},
-          // Cylinder sides and contours, back-side colours, twist and texture:
-          // about rendering, nothing to print.
+          // Cylinder sides, back-side colours, twist and texture: about
+          // rendering, nothing to print.
           {"@!", TurtleCommand::None, std::nullopt, std::nullopt},
-          {"@#", TurtleCommand::None, std::nullopt, std::nullopt},
           {"@;", TurtleCommand::None, std::nullopt, std::nullopt},
           {"@,", TurtleCommand::None, std::nullopt, std::nullopt},
           {"@Tf", TurtleCommand::None, std::nullopt, std::nullopt},
@@ -50,8 +57,6 @@ const std::vector<SymbolCommand> kSymbols = [] {
 }();
 
 const std::vector<RefusedName> kRefused = {
-    {"@o", "a disc"},
-    {"@c", "a disc"},
     {"@bo", "a circle"},
     {"@bc", "a circle"},
     {"@M", "a move to a point"},
@@ -61,11 +66,8 @@ const std::vector<RefusedName> kRefused = {
     {"@D", "the turtle's scale"},
     {"@Di", "the turtle's scale"},
     {"@Dd", "the turtle's scale"},
-    {"@Gs", "a generalized cylinder"},
-    {"@Gc", "a generalized cylinder"},
-    {"@Ge", "a generalized cylinder"},
-    {"@Gt", "a generalized cylinder"},
-    {"@Gr", "a generalized cylinder"},
+    {"@Gr", "a generalized cylinder's radius tangents"},
+    {"@#", "a contour, a cross-section other than the circle"},
     {"@PS", "a bicubic patch"},
     {"@PC", "a bicubic patch"},
     {"@PD", "a bicubic patch"},

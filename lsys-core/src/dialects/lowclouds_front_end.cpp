@@ -28,6 +28,8 @@ const std::vector<SymbolCommand> kSymbols = [] {
                      {"@Tx", TurtleCommand::None, std::nullopt, std::nullopt},
                      // Its sphere is 1 across unless told (turtle3d.js).
                      {"@O", TurtleCommand::Sphere, 1.0, 1},
+                     // Its disc too, in the heading–up plane.
+                     {"@o", TurtleCommand::DiscAcrossLeft, 1.0, 1},
                      {"@D", TurtleCommand::None, std::nullopt, std::nullopt},
                      {"@Di", TurtleCommand::None, std::nullopt, std::nullopt},
                  });
@@ -35,7 +37,6 @@ const std::vector<SymbolCommand> kSymbols = [] {
 }();
 
 const std::vector<RefusedName> kRefused = {
-    {"@o", "a circle"},
     {"@c", "a circle"},
     {"@M", "a move to a point"},
     {"@m", "a move to a point"},

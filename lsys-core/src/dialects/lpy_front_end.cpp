@@ -48,6 +48,10 @@ const std::vector<SymbolCommand> kSymbols = {
     // Sphere(radius), of the width without one.
     {"@O", TurtleCommand::Sphere, std::nullopt},
     {"Sphere", TurtleCommand::Sphere, std::nullopt},
+    // Circle(radius), of the width without one, across the heading
+    // (PlantGL's turtle).
+    {"@o", TurtleCommand::DiscAcrossHeading, std::nullopt},
+    {"Circle", TurtleCommand::DiscAcrossHeading, std::nullopt},
     {";", TurtleCommand::ColorNext, std::nullopt},
     {",", TurtleCommand::ColorPrevious, std::nullopt},
     {"SetColor", TurtleCommand::ColorNext, std::nullopt},
@@ -65,7 +69,6 @@ const std::vector<SymbolCommand> kSymbols = {
 // L-Py modules lsolid knows by name but cannot build: refused where they
 // stand rather than split into letters.
 const std::vector<RefusedName> kRefused = {
-    {"@o", "a circle"},
     {"@B", "a box"},
     {"@b", "a quad"},
     {"@L", "a label"},

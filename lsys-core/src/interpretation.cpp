@@ -34,6 +34,10 @@ constexpr int kDiscSides = 48;
 // cost time: cpfg's own views use up to 20.
 constexpr int kMostCylinderPieces = 256;
 
+// A move shorter than this fraction of the distance from the origin (at
+// least 1) draws no segment: some ulps.
+constexpr double kShortestMove = 1e-12;
+
 bool is_one_of(TurtleCommand command,
                std::initializer_list<TurtleCommand> commands) {
   return std::find(commands.begin(), commands.end(), command) != commands.end();
@@ -231,7 +235,18 @@ class Interpreter {
                                        surface.end_point.y * h +
                                        surface.end_point.z * u));
     check_finite();
-    if (sx == 0.0 || sy == 0.0 || sz == 0.0) {
+    // A scale of 0, or one that leaves the sheet some ulps across (vlab's
+    // sympodial plant draws its youngest leaves at 10⁻¹⁷), flattens it.
+    glm::dvec3 lo = sheet.points.front();
+    glm::dvec3 hi = lo;
+    for (const glm::dvec3& p : sheet.points) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+    const glm::dvec3 size = hi - lo;
+    if (sx == 0.0 || sy == 0.0 || sz == 0.0 ||
+        std::max({size.x, size.y, size.z}) <=
+            kShortestMove * std::max(1.0, glm::length(origin))) {
       ++skeleton_.degenerate_polygons;
       return;
     }
@@ -657,8 +672,13 @@ class Interpreter {
     }
     check_finite();
     // A step far smaller than where the turtle stands (F(1e38) at 1e308)
-    // moves it nowhere: no segment, as for F(0) (found by ls_fuzzer).
-    const bool moved = length != 0.0 && turtle.position() != p0;
+    // moves it nowhere: no segment, as for F(0) (found by ls_fuzzer). Nor
+    // does one that moves it by a few ulps (vlab's sympodial plant draws
+    // F(l) with l computed to 10⁻¹⁶): a tube that short has no direction,
+    // and its mitres made its neighbour cut itself.
+    const bool moved =
+        length != 0.0 && glm::length(turtle.position() - p0) >
+                             kShortestMove * std::max(1.0, glm::length(p0));
     if (!moved) ++skeleton_.zero_length_segments;
     // Inside a generalized cylinder `F` only moves (cpfg's start_spline:
     // "not to interpret f and F"); the cylinder draws the curve.

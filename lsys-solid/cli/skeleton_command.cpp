@@ -153,7 +153,8 @@ void warn_about_polygons(const lsys::Skeleton& skeleton) {
   warn(skeleton.unmatched_polygon_ends,
        "'}' without an open polygon are ignored");
   warn(skeleton.degenerate_polygons,
-       "polygons with fewer than 3 distinct points are dropped");
+       "polygons with fewer than 3 distinct points, or discs and surfaces "
+       "without area, are dropped");
 }
 
 void run_skeleton(const SkeletonCommand& command) {

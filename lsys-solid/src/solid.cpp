@@ -423,6 +423,25 @@ FlatModel flat_model(const lsys::Skeleton& skeleton, const Placement& placement,
     end_at(p1, r1, s.color);
     end_at(p0, r0, s.color);
   }
+  // A leaf or disc that starts at a branch's tip gets a joint there in the
+  // round model (parts.cpp's add_tip_joint), a wall and a half across at
+  // least: the flat model gets a node as wide, so that the round model's
+  // witnesses lie inside the footprint (a disc `@o` at each apex of vlab's
+  // signal models was reported lost).
+  for (const lsys::Polygon& polygon : skeleton.polygons) {
+    if (polygon.parent < 0) continue;
+    const lsys::Segment& stem =
+        skeleton.segments[static_cast<std::size_t>(polygon.parent)];
+    const glm::dvec3 tip = on_bed(placement, stem.p1);
+    Node& node = nodes[std::pair(std::round(tip.x * kFootprintCellsPerMm),
+                                 std::round(tip.y * kFootprintCellsPerMm))];
+    if (glm::length(polygon.points.front() - stem.p1) > node.radius_mm) {
+      continue;
+    }
+    node.radius_mm = std::max(node.radius_mm, 0.75 * print.wall_mm);
+    node.ends = std::max(node.ends, 2);
+    reach = std::max(reach, tube_corner_radius(node.radius_mm, tolerance));
+  }
   for (const auto& [key, node] : nodes) {
     if (node.ends > 1) {
       add(node_outline(node.at, node.radius_mm, tolerance), node.color);

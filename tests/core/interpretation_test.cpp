@@ -349,6 +349,10 @@ TEST(Interpretation, DrawsNoSegmentForAStepThatMovesTheTurtleNowhere) {
   ASSERT_EQ(s.segments.size(), 1U);
   EXPECT_EQ(s.zero_length_segments, 2U);
   for (const Segment& seg : s.segments) EXPECT_NE(seg.p0, seg.p1);
+  // Nor one of some ulps near the origin (a tube without a direction).
+  const Skeleton ulps = walk("axiom: FF(1e-17)F(2e-12)F\n");
+  EXPECT_EQ(ulps.segments.size(), 3U);
+  EXPECT_EQ(ulps.zero_length_segments, 1U);
 }
 
 TEST(Interpretation, PlacesWhatMakesAnEmptyDrawingWhereItCanBeKnown) {

@@ -188,6 +188,20 @@ TEST(Solid, APlanarFigureLyingFlatIsItsOutlineExtrudedUnlessRoundIsAsked) {
   EXPECT_GT(flat.report.witnesses_checked, 0U);
 }
 
+TEST(Solid, AFlatModelKeepsTheJointOfALeafAtABranchTip) {
+  // A leaf that starts at a branch's tip: the round model puts a joint
+  // there, which the flat footprint must hold too. Without a node there
+  // the footprint's rings crossed ("cannot wall the footprint"), and in
+  // vlab's signal models the joint was reported lost.
+  const Solid s = build_solid(parse("n=0, \u03B4=45\u00B0\nwidth: 0.2\n"
+                                    "F[+F{.-f+f|-f+f}]F\n"),
+                              {.print = {.size_mm = 40.0}});
+  expect_printable(s.mesh, 1);
+  EXPECT_TRUE(s.report.placement.lies_flat);
+  EXPECT_GT(s.report.flat_outlines, 0U);
+  EXPECT_GT(s.report.witnesses_checked, 0U);
+}
+
 TEST(Solid, TellsItsProgressStageByStage) {
   std::vector<std::string> stages;
   double last_union = -1.0;

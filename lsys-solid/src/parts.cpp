@@ -1145,7 +1145,8 @@ class PartBuilder {
     std::sort(ordered.begin(), ordered.end(),
               [](const auto& a, const auto& b) { return a[0] < b[0]; });
     for (const std::vector<std::size_t>& group : ordered) {
-      if (group.size() == 1 || !add_united_plates(group, outlines)) {
+      if (group.size() == 1 || !options_.unite_coplanar_polygons ||
+          !add_united_plates(group, outlines)) {
         for (const std::size_t i : group) add_plate(*outlines[i], i);
       }
       for (const std::size_t i : group) add_tip_joint(polygons[i]);

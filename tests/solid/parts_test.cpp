@@ -309,6 +309,15 @@ TEST(Parts, KeepsCoplanarPolygonsOfTwoColoursApartWhenSplittingColours) {
   EXPECT_EQ(build_parts(s, {.split_colors = false}).plates, 1U);
 }
 
+TEST(Parts, LeavesCoplanarPolygonsApartWhenTheFootprintWillUniteThem) {
+  lsys::Skeleton s;
+  s.polygons = {polygon({{0, 0, 0}, {4, 0, 0}, {4, 0, 4}, {0, 0, 4}}, 1),
+                polygon({{2, 0, 2}, {6, 0, 2}, {6, 0, 6}, {2, 0, 6}}, 1)};
+  const PartSet apart = build_parts(s, {.unite_coplanar_polygons = false});
+  EXPECT_EQ(apart.plates, 2U);
+  for (const Part& p : apart.parts) expect_printable(p.mesh);
+}
+
 // A sheet on a grid of `columns` × `rows` cells, point (i, j) at
 // at(i / columns, j / rows).
 template <typename At>

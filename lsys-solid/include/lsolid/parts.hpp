@@ -32,6 +32,11 @@ struct PartOptions {
   /// of several colours meet at a joint sphere, not a hull. Coloured output
   /// needs it; it costs booleans in the union where colours change often.
   bool split_colors = false;
+  /// Unite coplanar polygons that overlap or share edges before they become
+  /// plates (for the 3D union, where they would meet face on face). A model
+  /// printed as its extruded footprint needs no such union: its plates only
+  /// witness what the footprint must hold.
+  bool unite_coplanar_polygons = true;
 };
 
 /// The parts and what they came from.

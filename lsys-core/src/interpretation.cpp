@@ -12,10 +12,12 @@
 #include <glm/geometric.hpp>
 #include <initializer_list>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <optional>
 #include <string>
 
+#include "lsys/contour.hpp"
 #include "lsys/diagnostic.hpp"
 #include "lsys/module_string.hpp"
 #include "lsys/random.hpp"
@@ -96,6 +98,63 @@ bool is_color_index(double c) {
   return c >= 0.0 && c < static_cast<double>(kMaxColorIndex) + 1.0;
 }
 
+// One ring of a span: its centre, curve parameter and radius.
+struct Ring {
+  glm::dvec3 position{0.0};
+  double t = 0.0;
+  double radius = 0.0;
+};
+
+// Where a ring's points are in a sheet: from `first`, or all at `first`
+// when the ring has shrunk to one point.
+struct RingPoints {
+  std::uint32_t first = 0;
+  bool collapsed = false;
+  [[nodiscard]] std::uint32_t at(std::uint32_t i) const {
+    return collapsed ? first : first + i;
+  }
+};
+
+// The least rotation that turns unit vector `from` onto unit vector `to`,
+// applied to v.
+glm::dvec3 least_rotation(const glm::dvec3& from, const glm::dvec3& to,
+                          const glm::dvec3& v) {
+  const glm::dvec3 axis = glm::cross(from, to);
+  const double sin_a = glm::length(axis);
+  const double cos_a = glm::dot(from, to);
+  if (sin_a < 1e-15) {
+    if (cos_a > 0.0) return v;
+    // Turned right round: any half turn about an axis across `from`.
+    glm::dvec3 across = glm::cross(from, glm::dvec3(1.0, 0.0, 0.0));
+    if (glm::length(across) < 0.5) {
+      across = glm::cross(from, glm::dvec3(0.0, 1.0, 0.0));
+    }
+    across = glm::normalize(across);
+    return 2.0 * glm::dot(v, across) * across - v;
+  }
+  const glm::dvec3 k = axis / sin_a;
+  return v * cos_a + glm::cross(k, v) * sin_a +
+         k * glm::dot(k, v) * (1.0 - cos_a);
+}
+
+// v, across unit vector h, turned by `angle` radians about h.
+glm::dvec3 roll_about(const glm::dvec3& h, const glm::dvec3& v, double angle) {
+  return v * std::cos(angle) + glm::cross(h, v) * std::sin(angle);
+}
+
+// A generalized cylinder's last control point, as the next span needs it.
+struct CylinderPoint {
+  glm::dvec3 left{0.0};
+  glm::dvec3 up{0.0};
+  glm::dvec2 radius_tangent{0.0};
+  const Contour* contour = nullptr;
+  int sides = 0;
+  // The sheet swept from a contour so far (−1: none) and the first of the
+  // points of its last ring.
+  std::int32_t sheet = -1;
+  RingPoints ring;
+};
+
 struct TurtleState {
   Turtle turtle;
   double width = 1.0;  // diameter in model units, width_scale applied
@@ -117,6 +176,15 @@ struct TurtleState {
   // drawn last (the `f` between control points does not break the tube).
   std::int32_t cylinder_parent = -1;
   std::array<double, 2> tangent_factors{1.2, 1.2};
+  // The radius tangents (`@Gr`): the first ends the span to this control
+  // point, the second starts the span from it; 0 means linear.
+  std::array<glm::dvec2, 2> radius_tangents{};
+  bool scale_radius_tangents = false;
+  // The cross-section (`@#`; none: the circle) and its sides (`@!`).
+  const Contour* contour = nullptr;
+  int contour_sides = 8;
+  // What the span to the next control point takes from the last one.
+  CylinderPoint cylinder;
 };
 
 class Interpreter {
@@ -134,6 +202,7 @@ class Interpreter {
     state_.angle_deg = settings_.angle_deg;
     state_.tropism = settings_.tropism;
     state_.elasticity = settings_.elasticity;
+    state_.contour_sides = settings_.contour_sides;
     buffers_.resize(static_cast<std::size_t>(settings_.maximum_depth) + 1);
     slot_buffers_.resize(buffers_.size());
   }
@@ -303,14 +372,26 @@ class Interpreter {
     state_.cylinder_point = state_.turtle.position();
     state_.cylinder_heading = state_.turtle.heading();
     state_.cylinder_width = generation_width(state_.width, generation);
+    CylinderPoint& c = state_.cylinder;
+    c.left = state_.turtle.left();
+    c.up = state_.turtle.up();
+    c.radius_tangent = state_.radius_tangents[1];
+    if (c.contour != state_.contour || c.sides != state_.contour_sides) {
+      c.sheet = -1;  // a new cross-section starts a new sheet
+    }
+    c.contour = state_.contour;
+    c.sides = state_.contour_sides;
   }
 
   // The span of a generalized cylinder from its last control point to the
-  // turtle, as cpfg's general.c draws it: a cubic Hermite curve whose
-  // tangents are the headings at both ends times the chord's length and
-  // the `@Gt` factors, cut into `pieces` segments whose widths go linearly
-  // from one end's to the other's (cpfg's default radius tangents). A
-  // chord under 10⁻⁵ draws nothing, as in cpfg.
+  // turtle, as cpfg's general.c (interpolate_connection) draws it: a cubic
+  // Hermite curve whose tangents are the headings at both ends times the
+  // chord's length and the `@Gt` factors; along it, `pieces` + 1 rings at
+  // equal steps of a second parameter r, each at curve parameter t(r) and
+  // of radius ρ(r), two more Hermite cubics whose end tangents are the
+  // radius tangents of `@Gr` (by default t = r and ρ linear). A chord under
+  // 10⁻⁵ draws nothing, as in cpfg. Round, the rings become the ends of
+  // chained segments; with a contour, the rings of one sheet.
   void draw_cylinder_span(int pieces, std::uint32_t generation) {
     const glm::dvec3 p1 = state_.cylinder_point;
     const glm::dvec3 p2 = state_.turtle.position();
@@ -320,33 +401,187 @@ class Interpreter {
         state_.cylinder_heading * (length * state_.tangent_factors[0]);
     const glm::dvec3 t2 =
         state_.turtle.heading() * (length * state_.tangent_factors[1]);
-    const double w1 = state_.cylinder_width;
-    const double w2 = generation_width(state_.width, generation);
-    state_.last_segment = state_.cylinder_parent;
-    glm::dvec3 from = p1;
-    for (int k = 1; k <= pieces; ++k) {
-      const double t = static_cast<double>(k) / pieces;
-      const double t2x = t * t;
-      const double t3x = t2x * t;
-      const glm::dvec3 to =
-          k == pieces
-              ? p2
-              : (2 * t3x - 3 * t2x + 1) * p1 + (t3x - 2 * t2x + t) * t1 +
-                    (-2 * t3x + 3 * t2x) * p2 + (t3x - t2x) * t2;
-      if (!std::isfinite(glm::length(to))) {
-        state_.turtle.set_position(to);
+    const double r1 = state_.cylinder_width / 2.0;
+    const double r2 = generation_width(state_.width, generation) / 2.0;
+    glm::dvec2 rt1 = state_.cylinder.radius_tangent;
+    glm::dvec2 rt2 = state_.radius_tangents[0];
+    if (state_.scale_radius_tangents) {
+      rt1.y *= length;
+      rt2.y *= length;
+    }
+    if (rt1 == glm::dvec2(0.0)) rt1 = {1.0, r2 - r1};
+    if (rt2 == glm::dvec2(0.0)) rt2 = {1.0, r2 - r1};
+    const auto curve = [&](double t) {
+      const double tt = t * t;
+      const double ttt = tt * t;
+      return (2 * ttt - 3 * tt + 1) * p1 + (ttt - 2 * tt + t) * t1 +
+             (-2 * ttt + 3 * tt) * p2 + (ttt - tt) * t2;
+    };
+    const auto tangent = [&](double t) {
+      const double tt = t * t;
+      return (6 * tt - 6 * t) * p1 + (3 * tt - 4 * t + 1) * t1 +
+             (-6 * tt + 6 * t) * p2 + (3 * tt - 2 * t) * t2;
+    };
+    std::vector<Ring>& rings = rings_;
+    rings.clear();
+    for (int k = 0; k <= pieces; ++k) {
+      const double r = static_cast<double>(k) / pieces;
+      const double rr = r * r;
+      const double rrr = rr * r;
+      const double h01 = -2 * rrr + 3 * rr;
+      const double h10 = rrr - 2 * rr + r;
+      const double h11 = rrr - rr;
+      const double t =
+          k == 0 ? 0.0 : (k == pieces ? 1.0 : h01 + h10 * rt1.x + h11 * rt2.x);
+      const double radius =
+          k == 0        ? r1
+          : k == pieces ? r2
+                        : r1 + (r2 - r1) * h01 + h10 * rt1.y + h11 * rt2.y;
+      const glm::dvec3 at = k == 0 ? p1 : (k == pieces ? p2 : curve(t));
+      if (!std::isfinite(glm::length(at)) || !std::isfinite(radius)) {
+        state_.turtle.set_position(at * radius);
         check_finite();  // throws: the curve left the doubles
       }
-      if (to == from) continue;
-      const double a = static_cast<double>(k - 1) / pieces;
-      skeleton_.segments.push_back(Segment{from, to, w1 + (w2 - w1) * a,
-                                           w1 + (w2 - w1) * t, state_.color,
-                                           state_.last_segment});
-      state_.last_segment =
-          static_cast<std::int32_t>(skeleton_.segments.size() - 1);
-      from = to;
+      rings.push_back(Ring{at, t, radius});
     }
-    state_.cylinder_parent = state_.last_segment;
+    if (state_.cylinder.contour == nullptr) {
+      state_.last_segment = state_.cylinder_parent;
+      for (int k = 1; k <= pieces; ++k) {
+        const Ring& from = rings[static_cast<std::size_t>(k - 1)];
+        const Ring& to = rings[static_cast<std::size_t>(k)];
+        if (to.position == from.position) continue;
+        skeleton_.segments.push_back(Segment{
+            from.position, to.position, 2.0 * std::fabs(from.radius),
+            2.0 * std::fabs(to.radius), state_.color, state_.last_segment});
+        state_.last_segment =
+            static_cast<std::int32_t>(skeleton_.segments.size() - 1);
+      }
+      state_.cylinder_parent = state_.last_segment;
+      return;
+    }
+    sweep_contour(rings, tangent);
+  }
+
+  // The rings of a span swept from the contour into the cylinder's sheet.
+  // Between the control points' frames each ring's frame is the first's
+  // turned along with the heading (the least rotation, where cpfg's
+  // adjust_up_and_leftS takes an arcsine that stops at 90°), then rolled
+  // by the twist times t, the twist being what brings it onto the last
+  // frame with `twist of cylinders: on`, else 0; the last ring takes the
+  // turtle's own frame. A ring point (x, y) of the contour at radius ρ is
+  // at the ring's centre + ρ (x cpfg-up − y left), cpfg-up being −up here.
+  template <class Tangent>
+  void sweep_contour(const std::vector<Ring>& rings, const Tangent& tangent) {
+    CylinderPoint& c = state_.cylinder;
+    const Turtle& turtle = state_.turtle;
+    const glm::dvec3 h1 = state_.cylinder_heading;
+    const auto carried = [&](const glm::dvec3& h, const glm::dvec3& v) {
+      return least_rotation(h1, h, v);
+    };
+    double twist = 0.0;
+    if (settings_.twist_cylinders) {
+      const glm::dvec3 u = carried(turtle.heading(), c.up);
+      twist = std::atan2(glm::dot(glm::cross(u, turtle.up()), turtle.heading()),
+                         glm::dot(u, turtle.up()));
+    }
+    const std::vector<glm::dvec2>& shape = contour_points(*c.contour, c.sides);
+    if (c.sheet < 0) {
+      skeleton_.sheets.push_back(
+          Sheet{.color = state_.color, .parent = state_.cylinder_parent});
+      c.sheet = static_cast<std::int32_t>(skeleton_.sheets.size() - 1);
+      c.ring = add_ring(skeleton_.sheets.back(), shape, rings.front().position,
+                        rings.front().radius, c.up, c.left);
+    }
+    Sheet& sheet = skeleton_.sheets[static_cast<std::size_t>(c.sheet)];
+    sheet.color = state_.color;
+    for (std::size_t k = 1; k < rings.size(); ++k) {
+      const Ring& ring = rings[k];
+      glm::dvec3 up = turtle.up();
+      glm::dvec3 left = turtle.left();
+      if (k + 1 < rings.size()) {
+        glm::dvec3 h = tangent(ring.t);
+        h = glm::length(h) > 0.0 ? glm::normalize(h) : turtle.heading();
+        up = roll_about(h, carried(h, c.up), twist * ring.t);
+        left = roll_about(h, carried(h, c.left), twist * ring.t);
+      }
+      const RingPoints next =
+          add_ring(sheet, shape, ring.position, ring.radius, up, left);
+      join_rings(sheet, c.ring, next, shape.size());
+      c.ring = next;
+    }
+    state_.last_segment = state_.cylinder_parent;
+  }
+
+  // A ring's points, one only where it has shrunk to a point (a leaf's
+  // tip drawn at radius 0).
+  static RingPoints add_ring(Sheet& sheet, const std::vector<glm::dvec2>& shape,
+                             const glm::dvec3& centre, double radius,
+                             const glm::dvec3& up, const glm::dvec3& left) {
+    RingPoints ring{.first = static_cast<std::uint32_t>(sheet.points.size())};
+    for (const glm::dvec2& p : shape) {
+      sheet.points.push_back(centre - radius * (p.x * up + p.y * left));
+    }
+    const glm::dvec3 first = sheet.points[ring.first];
+    if (std::all_of(sheet.points.begin() + ring.first, sheet.points.end(),
+                    [&](const glm::dvec3& p) { return p == first; })) {
+      sheet.points.resize(ring.first + 1);
+      ring.collapsed = true;
+    }
+    return ring;
+  }
+
+  // Two triangles between each pair of neighbouring points of two rings,
+  // but none without area (at a ring shrunk to a point, a fan).
+  static void join_rings(Sheet& sheet, RingPoints a, RingPoints b,
+                         std::size_t count) {
+    const auto add = [&](std::uint32_t i, std::uint32_t j, std::uint32_t k) {
+      if (sheet.points[i] == sheet.points[j] ||
+          sheet.points[j] == sheet.points[k] ||
+          sheet.points[i] == sheet.points[k]) {
+        return;
+      }
+      sheet.triangles.push_back({i, j, k});
+    };
+    for (std::uint32_t i = 0; i + 1 < count; ++i) {
+      add(a.at(i), a.at(i + 1), b.at(i + 1));
+      add(a.at(i), b.at(i + 1), b.at(i));
+    }
+  }
+
+  // The contour `@#(id)` names.
+  const Contour& contour_of(double id) const {
+    const auto is_unknown = [this](double v) {
+      return v != std::trunc(v) || !grammar_.contours.contains(static_cast<int>(
+                                       std::clamp(v, -1e9, 1e9)));
+    };
+    if (is_unknown(id)) {
+      throw error_at(
+          *grammar_.source,
+          place_of(grammar_, {TurtleCommand::SelectContour}, is_unknown,
+                   grammar_.axiom_offset),
+          "no contour: line of the view file names contour " + number_text(id));
+    }
+    const Contour& contour = grammar_.contours.at(static_cast<int>(id));
+    if (contour.closed) {
+      throw error_at(
+          *grammar_.source,
+          place_of(
+              grammar_, {TurtleCommand::SelectContour},
+              [&](double v) { return v == id; }, grammar_.axiom_offset),
+          "contour " + number_text(id) +
+              " is closed; closed contours (a solid cross-section other than "
+              "the circle) are not supported yet");
+    }
+    return contour;
+  }
+
+  // A contour sampled at `sides` (cached: every ring of a model uses one
+  // or two).
+  const std::vector<glm::dvec2>& contour_points(const Contour& contour,
+                                                int sides) {
+    auto& points = sampled_contours_[{&contour, sides}];
+    if (points.empty()) points = sample_contour(contour, sides);
+    return points;
   }
 
   double angle(std::span<const double> params) const {
@@ -532,6 +767,7 @@ class Interpreter {
                       : params[0] * settings_.sphere_diameter_per_parameter);
         return;
       case TurtleCommand::CylinderStart:
+        state_.cylinder.sheet = -1;
         set_cylinder_point(generation);
         state_.cylinder_parent = state_.last_segment;
         return;
@@ -540,7 +776,10 @@ class Interpreter {
         // cpfg's blackbox.c: n pieces, at least 1; without a parameter, 1.
         const double pieces = params.empty() ? 1.0 : params[0];
         // Without `@Gs` cpfg starts a cylinder here (continue_spline).
-        if (!state_.in_cylinder) state_.cylinder_parent = state_.last_segment;
+        if (!state_.in_cylinder) {
+          state_.cylinder_parent = state_.last_segment;
+          state_.cylinder.sheet = -1;
+        }
         if (state_.in_cylinder) {
           draw_cylinder_span(
               pieces >= kMostCylinderPieces
@@ -553,6 +792,33 @@ class Interpreter {
         if (command == TurtleCommand::CylinderEnd) state_.in_cylinder = false;
         return;
       }
+      case TurtleCommand::CylinderRadiusTangents:
+        // cpfg's blackbox.c: one parameter switches the scaling, two set
+        // both tangents, four set each.
+        if (params.size() == 1) {
+          state_.scale_radius_tangents = params[0] != 0.0;
+        } else if (params.size() >= 2) {
+          const auto tangent = [](double angle_deg, double size) {
+            const double a = angle_deg * std::numbers::pi / 180.0;
+            return glm::dvec2(std::cos(a) * size, std::sin(a) * size);
+          };
+          state_.radius_tangents[0] = tangent(params[0], params[1]);
+          state_.radius_tangents[1] = params.size() >= 4
+                                          ? tangent(params[2], params[3])
+                                          : state_.radius_tangents[0];
+        }
+        return;
+      case TurtleCommand::SelectContour:
+        state_.contour = params.empty() ? nullptr : &contour_of(params[0]);
+        return;
+      case TurtleCommand::ContourSides:
+        // cpfg's blackbox.c: 8 without n, at least 3.
+        state_.contour_sides =
+            params.empty() || std::isnan(params[0])
+                ? settings_.contour_sides
+                : static_cast<int>(
+                      std::clamp(params[0], 3.0, double{kMostContourSides}));
+        return;
       case TurtleCommand::CylinderTangents:
         if (params.empty()) return;
         state_.tangent_factors = {params[0],
@@ -742,6 +1008,9 @@ class Interpreter {
   Variables* variables_ = nullptr;
   std::uint64_t max_modules_ = std::numeric_limits<std::uint64_t>::max();
   std::function<void()> on_limit_;
+  std::vector<Ring> rings_;
+  std::map<std::pair<const Contour*, int>, std::vector<glm::dvec2>>
+      sampled_contours_;
 };
 
 }  // namespace

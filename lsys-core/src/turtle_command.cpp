@@ -66,6 +66,8 @@ int max_parameters(TurtleCommand command) noexcept {
       return 3;
     case TurtleCommand::CylinderTangents:
       return 2;
+    case TurtleCommand::CylinderRadiusTangents:
+      return 4;
     case TurtleCommand::CylinderStart:
       return 0;
     case TurtleCommand::TurnAround:

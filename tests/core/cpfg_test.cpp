@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <glm/geometric.hpp>
+#include <numbers>
 
 #include "lsys/interpretation.hpp"
 #include "support/core_helpers.hpp"
@@ -296,18 +297,28 @@ TEST(Cpfg, DrawsAGeneralizedCylinderInPiecesAlongItsHermiteCurve) {
   EXPECT_NEAR(chord.segments[0].p1.z, 0.0, 1e-12);
 }
 
+TEST(Cpfg, ShapesACylindersRadiusAlongTheTangentsOfGr) {
+  // From radius 0 to 0: a start tangent (0, 2) (90°, length 2) and the
+  // default (1, 0) at the end make the ring at r = 1/2 sit at curve
+  // parameter t = h01 + h11 = 0.375 with radius 2·h10 = 0.25.
+  const Skeleton s = interpret(
+      cpfg("Lsystem: 1\nAxiom: !(0) @Gr(0,0,90,2) @Gs f(2) @Gr(0,0) @Ge(2)\n"
+           "endlsystem\n"));
+  ASSERT_EQ(s.segments.size(), 2U);
+  EXPECT_EQ(s.segments[0].start_diameter, 0.0);
+  // The radius tangents are in model units, whatever unit the widths are.
+  EXPECT_NEAR(s.segments[0].end_diameter, 0.5, 1e-15);
+  // The Hermite curve of the chord 2 with tangents 2 × 1.2 at t = 0.375.
+  EXPECT_NEAR(s.segments[0].p1.z, 0.7734375, 1e-12);
+  EXPECT_EQ(s.segments[1].end_diameter, 0.0);
+}
+
 TEST(Cpfg, RefusesWhatLsolidCannotDrawByNameAtItsPlace) {
   EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: F~l(2)\n"),
             "2:9: '~' (a predefined surface that no surface: line of the "
             "view names) is not supported by lsolid");
   EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: F\nF --> F@bo(2)\n"),
             "3:8: '@bo' (a circle) is not supported by lsolid");
-  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: @Gs @Gr(0,1) F @Ge(3)\n"),
-            "2:12: '@Gr' (a generalized cylinder's radius tangents) is not "
-            "supported by lsolid");
-  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: @#(1) @Gs F @Ge(3)\n"),
-            "2:8: '@#' (a contour, a cross-section other than the circle) "
-            "is not supported by lsolid");
   EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: A\nA > ?P(x,y) --> B\n"),
             "3:5: '?' (a sub-L-system call or a query) is not supported by "
             "lsolid");
@@ -529,6 +540,92 @@ TEST_F(CpfgFiles, ScalesASurfaceByItsParametersAndDropsAFlatOne) {
   // ~l(1, 3): x by 1, y (along the heading) by 3, z by 1.
   EXPECT_NEAR(glm::length(s.sheets[0].points.back() - s.sheets[0].points[0]),
               std::sqrt(1.0 + 9.0), 1e-12);
+}
+
+// A contour from (-1, 0) to (1, 0), its ends counted three times.
+constexpr std::string_view kLineContour =
+    "cver 1 3\nname: line\npoints: 2 6\ntype: or\nsamples: 8\n"
+    "-1 0 0 3\n1 0 0 3\n";
+
+TEST_F(CpfgFiles, SweepsAContourAlongAGeneralizedCylinderAsOneSheet) {
+  write("leaf.l",
+        "Lsystem: 1\nAxiom: F !(2) @#(1) @!(4) @Gt(1) @Gs f(3) @Ge(3)\n"
+        "endlsystem\n");
+  write("leaf.v", "line style: cylinder\ncontour: 1 line.con\n");
+  write("line.con", kLineContour);
+  const Skeleton s = interpret(read("leaf.l"));
+  ASSERT_EQ(s.segments.size(), 1U);  // the F; the cylinder is a sheet
+  ASSERT_EQ(s.sheets.size(), 1U);
+  const Sheet& sheet = s.sheets[0];
+  // 4 rings of 4 + 1 points, two triangles between neighbours.
+  ASSERT_EQ(sheet.points.size(), 20U);
+  EXPECT_EQ(sheet.triangles.size(), 24U);
+  EXPECT_EQ(sheet.parent, 0);
+  // The contour's x runs along cpfg's up, lsolid's −up (0, −1, 0) at the
+  // start, times the radius 1; its points are evenly spaced (to the
+  // 64 chords a span of the table of lengths). With tangents of the
+  // chord's length (`@Gt(1)`) the rings are evenly spaced too.
+  for (std::size_t ring = 0; ring < 4; ++ring) {
+    for (std::size_t i = 0; i < 5; ++i) {
+      const glm::dvec3 p = sheet.points[ring * 5 + i];
+      EXPECT_NEAR(p.x, 0.0, 1e-12);
+      EXPECT_NEAR(p.y, -1.0 + 0.5 * static_cast<double>(i), 1e-4);
+      EXPECT_NEAR(p.z, 1.0 + static_cast<double>(ring), 1e-12);
+    }
+  }
+}
+
+TEST_F(CpfgFiles, TwistsAContourSmoothlyOnlyWhenTheViewAsksForIt) {
+  write("leaf.l",
+        "Lsystem: 1\nAxiom: @#(1) @!(4) @Gs f(3) /(90) @Ge(3)\n"
+        "endlsystem\n");
+  write("line.con", kLineContour);
+  // The angle of each ring's end from its centre, about the heading.
+  const auto angles = [&] {
+    const Skeleton s = interpret(read("leaf.l"));
+    std::vector<double> out;
+    for (std::size_t ring = 0; ring < 4; ++ring) {
+      const glm::dvec3 d = s.sheets.at(0).points.at(ring * 5 + 4) -
+                           s.sheets.at(0).points.at(ring * 5);
+      out.push_back(std::atan2(d.x, d.y) * 180.0 / std::numbers::pi);
+    }
+    return out;
+  };
+  write("leaf.v", "contour: 1 line.con\ntwist of cylinders: on\n");
+  const std::vector<double> smooth = angles();
+  write("leaf.v", "contour: 1 line.con\n");
+  const std::vector<double> sudden = angles();
+  for (std::size_t ring = 0; ring < 4; ++ring) {
+    EXPECT_NEAR(std::fabs(smooth[ring]), 30.0 * static_cast<double>(ring),
+                1e-9);
+    EXPECT_NEAR(std::fabs(sudden[ring]), ring == 3 ? 90.0 : 0.0, 1e-9);
+  }
+}
+
+TEST_F(CpfgFiles, PlacesErrorsInAContourFileAndNamesAMissingContour) {
+  write("leaf.l", "Lsystem: 1\nAxiom: @#(2) @Gs f @Ge(3)\nendlsystem\n");
+  write("leaf.v", "contour: 1 line.con\n");
+  write("line.con", kLineContour);
+  EXPECT_EQ(located_error_of([&] { (void)interpret(read("leaf.l")); }),
+            "2:8: no contour: line of the view file names contour 2");
+  write("line.con",
+        "cver 1 3\nname: line\npoints: 2 7\ntype: or\nsamples: 8\n"
+        "-1 0 0 3\n1 0 0 3\n");
+  EXPECT_EQ(located_error_of([&] { (void)read("leaf.l"); }),
+            "7:8: the control points count 6, not the 7 the header gives");
+  write("line.con",
+        "cver 1 3\nname: line\npoints: 2 6\ntype: or\nsamples: 8\n"
+        "-1 0 1 3\n1 0 0 3\n");
+  EXPECT_EQ(located_error_of([&] { (void)read("leaf.l"); }),
+            "6:6: a contour out of its plane (a third coordinate other than "
+            "0) is not supported");
+  write("line.con",
+        "cver 1 3\nname: line\npoints: 2 6\ntype: cr\nsamples: 8\n"
+        "-1 0 0 3\n1 0 0 3\n");
+  write("leaf.l", "Lsystem: 1\nAxiom: @#(1) @Gs f @Ge(3)\nendlsystem\n");
+  EXPECT_EQ(located_error_of([&] { (void)interpret(read("leaf.l")); }),
+            "2:8: contour 1 is closed; closed contours (a solid "
+            "cross-section other than the circle) are not supported yet");
 }
 
 TEST_F(CpfgFiles, PlacesErrorsInASurfaceFileAndNamesAMissingOne) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "lsys/alphabet.hpp"
+#include "lsys/contour.hpp"
 #include "lsys/expression.hpp"
 #include "lsys/settings.hpp"
 #include "lsys/source.hpp"
@@ -163,6 +164,8 @@ struct Grammar {
   std::vector<std::string> warnings;
   /// The surfaces of the symbols whose command is TurtleCommand::Surface.
   std::map<SymbolId, Surface> surfaces;
+  /// The contours `@#(id)` selects, by id (cpfg's view file).
+  std::map<int, Contour> contours;
   /// cpfg's global variables, by slot, and its blocks of statements: once
   /// before the axiom, before and after each step, after the last.
   std::vector<std::string> globals;

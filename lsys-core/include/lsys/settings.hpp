@@ -63,6 +63,13 @@ struct Settings {
   double elasticity = 0.0;             ///< e; 0 turns tropism off
   /// What a bare cpfg `_` adds to e (cpfg's `elasticity increment`).
   double elasticity_increment = 0.0;
+  /// Points around a generalized cylinder's ring swept from a contour
+  /// (cpfg's `contour sides`).
+  int contour_sides = 8;
+  /// Whether a generalized cylinder's rings turn smoothly from one control
+  /// point's frame to the next (cpfg's `twist of cylinders: on`), or keep
+  /// the first's, carried along the curve, until the last ring.
+  bool twist_cylinders = false;
   std::uint64_t seed = 0;
   RollConvention roll = RollConvention::Lpfg;
   int maximum_depth = 1;         ///< of homomorphism and decomposition, as cpfg

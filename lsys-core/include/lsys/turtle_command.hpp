@@ -65,6 +65,17 @@ enum class TurtleCommand {
   CylinderPoint,
   CylinderEnd,
   CylinderTangents,
+  /// cpfg's `@Gr(a1, l1, a2, l2)`: the tangents of the radius along the
+  /// spans to come, at angle a (degrees) and length l in the plane of
+  /// (curve parameter, radius); `@Gr(s)` scales them by each span's chord
+  /// when s is not 0.
+  CylinderRadiusTangents,
+  /// cpfg's `@#(id)`: the cross-section of the generalized cylinders to
+  /// come is contour id (Grammar::contours); `@#` alone, the circle.
+  SelectContour,
+  /// cpfg's `@!(n)`: n points around the rings swept from a contour
+  /// (`contour sides` without n).
+  ContourSides,
 };
 
 /// The command a module name has without aliases, if it has one.

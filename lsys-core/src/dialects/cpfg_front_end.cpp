@@ -9,9 +9,11 @@
 // sub-L-system, `'` means nothing, `_` changes the elasticity. What cpfg
 // can draw and lsolid cannot is refused by name (docs/dialects/cpfg.md).
 #include <filesystem>
+#include <map>
 #include <system_error>
 
 #include "dialects/c_preprocessor.hpp"
+#include "dialects/cpfg_contour.hpp"
 #include "dialects/cpfg_functions.hpp"
 #include "dialects/cpfg_surface.hpp"
 #include "dialects/cpfg_view.hpp"
@@ -39,14 +41,17 @@ const std::vector<SymbolCommand> kSymbols = [] {
           {"@Gc", TurtleCommand::CylinderPoint, std::nullopt, 1},
           {"@Ge", TurtleCommand::CylinderEnd, std::nullopt, 1},
           {"@Gt", TurtleCommand::CylinderTangents, std::nullopt, 2},
+          {"@Gr", TurtleCommand::CylinderRadiusTangents, std::nullopt, 4},
+          // The cross-section of the cylinders to come, and its sides.
+          {"@#", TurtleCommand::SelectContour, std::nullopt, 1},
+          {"@!", TurtleCommand::ContourSides, std::nullopt, 1},
           // Discs of the width, or of the diameter given (blackbox.c).
           {"@c", TurtleCommand::DiscAcrossUp, std::nullopt, 1},
           {"@o", TurtleCommand::DiscFacingViewer, std::nullopt, 1},
           // The end of a sub-L-system (whose call `?` is refused); no drawing.
           {"$", TurtleCommand::None, std::nullopt, std::nullopt},
-          // Cylinder sides, back-side colours, twist and texture: about
-          // rendering, nothing to print.
-          {"@!", TurtleCommand::None, std::nullopt, std::nullopt},
+          // Back-side colours, twist and texture: about rendering, nothing
+          // to print.
           {"@;", TurtleCommand::None, std::nullopt, std::nullopt},
           {"@,", TurtleCommand::None, std::nullopt, std::nullopt},
           {"@Tf", TurtleCommand::None, std::nullopt, std::nullopt},
@@ -66,8 +71,6 @@ const std::vector<RefusedName> kRefused = {
     {"@D", "the turtle's scale"},
     {"@Di", "the turtle's scale"},
     {"@Dd", "the turtle's scale"},
-    {"@Gr", "a generalized cylinder's radius tangents"},
-    {"@#", "a contour, a cross-section other than the circle"},
     {"@PS", "a bicubic patch"},
     {"@PC", "a bicubic patch"},
     {"@PD", "a bicubic patch"},
@@ -123,6 +126,8 @@ Draft notation(const CpfgView& view) {
   }
   s.elasticity = view.elasticity.value_or(0.0);
   s.elasticity_increment = view.elasticity_increment.value_or(0.0);
+  s.contour_sides = view.contour_sides.value_or(8);
+  s.twist_cylinders = view.twist_cylinders.value_or(false);
   draft.warnings = view.warnings;
   if (view.color_increment && *view.color_increment != 1.0) {
     draft.warnings.emplace_back(
@@ -207,6 +212,17 @@ Surfaces read_surfaces(const CpfgView& view,
   return out;
 }
 
+std::map<int, Contour> read_contours(const CpfgView& view,
+                                     const std::filesystem::path& view_path) {
+  std::map<int, Contour> out;
+  for (const CpfgView::ContourLine& line : view.contours) {
+    const auto file = load_source(view_path.parent_path() / line.file);
+    check_text(*file);
+    out[line.id] = read_cpfg_contour(*file);
+  }
+  return out;
+}
+
 }  // namespace
 
 Grammar read_cpfg(std::shared_ptr<const SourceFile> source,
@@ -225,6 +241,8 @@ Grammar read_cpfg(std::shared_ptr<const SourceFile> source,
                                             .tab_continues = true,
                                             .predefined = functions.names});
   Surfaces surfaces = view_path ? read_surfaces(view, *view_path) : Surfaces{};
+  std::map<int, Contour> contours =
+      view_path ? read_contours(view, *view_path) : std::map<int, Contour>{};
   Draft draft = notation(view);
   draft.functions = functions.table;
   for (const std::string& name : surfaces.names) {
@@ -245,6 +263,7 @@ Grammar read_cpfg(std::shared_ptr<const SourceFile> source,
       grammar.surfaces[*symbol] = std::move(surfaces.meshes[i]);
     }
   }
+  grammar.contours = std::move(contours);
   refuse_parameterised_braces(
       grammar,
       "cpfg's '{(n)' (a generalized cylinder) is not supported; write '{' "

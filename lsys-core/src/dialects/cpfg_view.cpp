@@ -23,7 +23,7 @@ namespace {
 
 // Commands about the camera, lights, rendering and animation: accepted
 // and left out, as a solid has none of them.
-constexpr std::array<std::string_view, 39> kViewOnly{{
+constexpr std::array<std::string_view, 36> kViewOnly{{
     "viewpoint",
     "view reference point",
     "twist",
@@ -42,9 +42,7 @@ constexpr std::array<std::string_view, 39> kViewOnly{{
     "antialiasing",
     "concave polygons",
     "tapered lines",
-    "contour sides",
     "polygonization level",
-    "twist of cylinders",
     "light direction",
     "diffuse reflection",
     "surface ambient",
@@ -52,7 +50,6 @@ constexpr std::array<std::string_view, 39> kViewOnly{{
     "light",
     "line",
     "tsurface",
-    "contour",
     "texture",
     "background scene",
     "font",
@@ -224,6 +221,24 @@ class ViewReader {
       // One number after the size is a texture, not a division.
       if (line.t == 0) line.s = 0;
       view_.surfaces.push_back(std::move(line));
+    } else if (label == "contour") {
+      // `contour: 1 leaf.con`: `@#(1)` sweeps the file's curve.
+      CpfgView::ContourLine line;
+      const std::size_t at = v;
+      const double id = number(v, end);
+      if (id != static_cast<int>(id)) fail(at, "expected a contour id");
+      line.id = static_cast<int>(id);
+      const std::string_view file = file_name(v, end);
+      if (file.empty()) fail(v, "expected a contour file");
+      line.file = std::string(file);
+      view_.contours.push_back(std::move(line));
+    } else if (label == "contour sides") {
+      // cpfg draws at least 3 sides.
+      const double sides = number(v, end);
+      view_.contour_sides =
+          static_cast<int>(std::clamp(sides, 3.0, double{kMostContourSides}));
+    } else if (label == "twist of cylinders") {
+      view_.twist_cylinders = word(v, end).starts_with("on");
     } else if (label == "function" || label == "function set") {
       std::size_t k = v;
       const std::string_view file = file_name(k, end);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "lsys/contour.hpp"
 #include "lsys/source.hpp"
 
 namespace lsys::dialects {
@@ -37,6 +38,18 @@ struct CpfgView {
     int t = 0;
   };
   std::vector<SurfaceLine> surfaces;
+  /// A `contour:` line: `@#(id)` sweeps the contour in `file`.
+  struct ContourLine {
+    int id = 0;
+    std::string file;
+  };
+  std::vector<ContourLine> contours;
+  /// `contour sides`: points around a generalized cylinder's ring (3 to
+  /// kMostContourSides).
+  std::optional<int> contour_sides;
+  /// `twist of cylinders: on`: a generalized cylinder's rings turn
+  /// smoothly from one control point's frame to the next.
+  std::optional<bool> twist_cylinders;
   /// `function:` files in order (func's ids from 1), or a `function set:`.
   std::vector<std::string> functions;
   std::string function_set;

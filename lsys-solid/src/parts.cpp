@@ -1248,7 +1248,9 @@ class PartBuilder {
 
   // A sheet (a predefined surface, cpfg's `~l`) thickened as plates are:
   // along its normals, or if that cuts itself (a leaf's pointed tip bends
-  // sharply for the thickness) swept along its mean normal. A sheet a few
+  // sharply for the thickness) swept along its mean normal, or else along
+  // its normals but thinner where they cut (a swept leaf's hooked edges
+  // where it narrows to its tip), with a warning. A sheet a few
   // walls across that neither way makes clear of itself (a bud 3 mm wide,
   // a leaf just emerging) is printed as the convex hull of its points
   // thickened, which a print that small barely tells apart; a larger one
@@ -1266,6 +1268,17 @@ class PartBuilder {
       set_.parts.push_back(
           Part{std::move(*mesh), std::move(label), sheet.color});
       ++set_.sheets;
+      return;
+    }
+    if (std::optional<ThinnedSheet> thinned =
+            thicken_sheet_thinning(sheet, thickness);
+        thinned && validate(thinned->mesh).is_printable()) {
+      set_.parts.push_back(
+          Part{std::move(thinned->mesh), std::move(label), sheet.color});
+      ++set_.sheets;
+      ++set_.thinned_sheets;
+      set_.thinnest_sheet_mm = std::min(set_.thinnest_sheet_mm,
+                                        thinned->thinnest_fraction * thickness);
       return;
     }
     Box box;

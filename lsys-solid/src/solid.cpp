@@ -848,6 +848,13 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
         "and are printed as the convex hull of their thickened points",
         parts.hulled_sheets, parts.sheets));
   }
+  if (parts.thinned_sheets > 0) {
+    report.warnings.push_back(fmt::format(
+        "{} of {} surfaces fold more sharply than they are thick and are "
+        "thinner there, down to {:.2f} mm (below the wall: a slicer may "
+        "leave those spots out)",
+        parts.thinned_sheets, parts.sheets, parts.thinnest_sheet_mm));
+  }
   report.plates = parts.plates;
   report.skipped_polygons = parts.skipped_polygons;
   report.seconds.parts = clock.lap();

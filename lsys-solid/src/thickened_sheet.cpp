@@ -18,6 +18,9 @@
 #include <utility>
 #include <vector>
 
+#include "cgal/junction_geometry.hpp"
+#include "lsolid/errors.hpp"
+
 namespace lsolid {
 namespace {
 
@@ -26,6 +29,9 @@ using Triangle = std::array<std::uint32_t, 3>;
 // A sweep along a direction this slanted to some triangle (75.5°) would
 // have to be four times the thickness.
 constexpr double kSteepestSweep = 0.25;
+
+// The most of a sheet's area that thinning may touch.
+constexpr double kMostThinnedArea = 0.25;
 
 // The triangles flipped where needed so that every edge two triangles share
 // runs one way in one and the other way in the other. False if no such
@@ -77,12 +83,18 @@ bool orient(std::vector<Triangle>& triangles) {
   return true;
 }
 
-}  // namespace
+// The sheet's triangles, oriented, and how far each point moves to
+// either side, and along what.
+struct Offsets {
+  std::vector<Triangle> triangles;
+  std::vector<glm::dvec3> normal;
+  std::vector<double> offset;
+};
 
-std::optional<TriangleMesh> thicken_sheet(const lsys::Sheet& sheet,
-                                          double thickness_mm,
-                                          SheetOffset offset_along) {
-  std::vector<Triangle> triangles = sheet.triangles;
+std::optional<Offsets> offsets(const lsys::Sheet& sheet, double thickness_mm,
+                               SheetOffset offset_along) {
+  Offsets out{.triangles = sheet.triangles};
+  std::vector<Triangle>& triangles = out.triangles;
   if (triangles.empty() || !orient(triangles)) return std::nullopt;
   const std::size_t count = sheet.points.size();
   std::vector<bool> used(count, false);
@@ -92,7 +104,8 @@ std::optional<TriangleMesh> thicken_sheet(const lsys::Sheet& sheet,
   // Normals at the points weighted by each triangle's angle there
   // (Thürrner and Wüthrich 1998): they do not change when a triangle is
   // cut in two. Their sum, weighted by area, is the sheet's mean normal.
-  std::vector<glm::dvec3> normal(count, glm::dvec3(0.0));
+  std::vector<glm::dvec3>& normal = out.normal;
+  normal.assign(count, glm::dvec3(0.0));
   std::vector<glm::dvec3> face_normal;
   face_normal.reserve(triangles.size());
   glm::dvec3 mean(0.0);
@@ -111,7 +124,8 @@ std::optional<TriangleMesh> thicken_sheet(const lsys::Sheet& sheet,
       normal[t[k]] += angle * face_normal.back();
     }
   }
-  std::vector<double> offset(count, thickness_mm / 2.0);
+  std::vector<double>& offset = out.offset;
+  offset.assign(count, thickness_mm / 2.0);
   if (offset_along == SheetOffset::Normals) {
     for (std::size_t i = 0; i < count; ++i) {
       if (!used[i]) continue;  // remove_unused_vertices drops it below
@@ -143,17 +157,27 @@ std::optional<TriangleMesh> thicken_sheet(const lsys::Sheet& sheet,
     std::fill(normal.begin(), normal.end(), d);
     std::fill(offset.begin(), offset.end(), thickness_mm / 2.0 / least);
   }
+  return out;
+}
+
+// The closed solid, point i of the sheet at i below and count + i above,
+// each moved by its offset times `scale[i]`; unused points stay.
+TriangleMesh solid(const lsys::Sheet& sheet, const Offsets& o,
+                   const std::vector<double>& scale) {
+  const std::size_t count = sheet.points.size();
   TriangleMesh mesh;
   mesh.vertices.reserve(2 * count);
   for (std::size_t i = 0; i < count; ++i) {
-    mesh.vertices.push_back(sheet.points[i] - offset[i] * normal[i]);
+    mesh.vertices.push_back(sheet.points[i] -
+                            scale[i] * o.offset[i] * o.normal[i]);
   }
   for (std::size_t i = 0; i < count; ++i) {
-    mesh.vertices.push_back(sheet.points[i] + offset[i] * normal[i]);
+    mesh.vertices.push_back(sheet.points[i] +
+                            scale[i] * o.offset[i] * o.normal[i]);
   }
   const auto top = static_cast<std::uint32_t>(count);
   std::map<std::pair<std::uint32_t, std::uint32_t>, int> uses;
-  for (const Triangle& t : triangles) {
+  for (const Triangle& t : o.triangles) {
     mesh.triangles.push_back({t[0] + top, t[1] + top, t[2] + top});
     mesh.triangles.push_back({t[0], t[2], t[1]});
     for (int k = 0; k < 3; ++k) {
@@ -164,7 +188,7 @@ std::optional<TriangleMesh> thicken_sheet(const lsys::Sheet& sheet,
   }
   // The wall: each boundary edge i → j of the top face, whose bottom copy
   // runs j → i, closed by a quad i, j, j', i'.
-  for (const Triangle& t : triangles) {
+  for (const Triangle& t : o.triangles) {
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t i = t[k];
       const std::uint32_t j = t[(k + 1) % 3];
@@ -173,12 +197,77 @@ std::optional<TriangleMesh> thicken_sheet(const lsys::Sheet& sheet,
       mesh.triangles.push_back({i, j + top, i + top});
     }
   }
+  return mesh;
+}
+
+// Without the unused points, and facing out.
+TriangleMesh finished(TriangleMesh mesh) {
   remove_unused_vertices(mesh);
-  // The orientation chosen may face inward: turn it out.
   if (signed_volume(mesh) < 0.0) {
     for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
   }
   return mesh;
+}
+
+}  // namespace
+
+std::optional<TriangleMesh> thicken_sheet(const lsys::Sheet& sheet,
+                                          double thickness_mm,
+                                          SheetOffset offset_along) {
+  const std::optional<Offsets> o = offsets(sheet, thickness_mm, offset_along);
+  if (!o) return std::nullopt;
+  return finished(
+      solid(sheet, *o, std::vector<double>(sheet.points.size(), 1.0)));
+}
+
+std::optional<ThinnedSheet> thicken_sheet_thinning(const lsys::Sheet& sheet,
+                                                   double thickness_mm) {
+  const std::optional<Offsets> o =
+      offsets(sheet, thickness_mm, SheetOffset::Normals);
+  if (!o) return std::nullopt;
+  const std::size_t count = sheet.points.size();
+  std::vector<double> scale(count, 1.0);
+  for (;;) {
+    TriangleMesh mesh = solid(sheet, *o, scale);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    try {
+      pairs = intersecting_triangle_pairs(mesh);
+    } catch (const GeometryError&) {
+      return std::nullopt;  // not an oriented surface: nothing to thin
+    }
+    if (pairs.empty()) {
+      // Thinning for more than a fold's edge would print a thinner plate,
+      // not the one asked for.
+      double area = 0.0;
+      double thinned_area = 0.0;
+      for (const Triangle& t : o->triangles) {
+        const double a =
+            glm::length(glm::cross(sheet.points[t[1]] - sheet.points[t[0]],
+                                   sheet.points[t[2]] - sheet.points[t[0]]));
+        area += a;
+        if (scale[t[0]] < 1.0 || scale[t[1]] < 1.0 || scale[t[2]] < 1.0) {
+          thinned_area += a;
+        }
+      }
+      if (thinned_area > kMostThinnedArea * area) return std::nullopt;
+      return ThinnedSheet{
+          .mesh = finished(std::move(mesh)),
+          .thinnest_fraction = *std::min_element(scale.begin(), scale.end())};
+    }
+    bool thinned = false;
+    for (const auto& [f, g] : pairs) {
+      for (const std::uint32_t face : {f, g}) {
+        for (const std::uint32_t v : mesh.triangles[face]) {
+          double& s = scale[v % count];
+          if (s > kThinnestSheet) {
+            s = std::max(kThinnestSheet, s / 2.0);
+            thinned = true;
+          }
+        }
+      }
+    }
+    if (!thinned) return std::nullopt;
+  }
 }
 
 }  // namespace lsolid

@@ -33,4 +33,26 @@ enum class SheetOffset {
 [[nodiscard]] std::optional<TriangleMesh> thicken_sheet(
     const lsys::Sheet& sheet, double thickness_mm, SheetOffset offset_along);
 
+/// Where a sheet thickened along its normals cuts itself, the points of
+/// the triangles that cut others move half as far, until nothing cuts or
+/// they move kThinnestSheet of the way: the plate is thinner only where it
+/// folds more sharply than its thickness can follow (the tip of a leaf
+/// swept from a contour, whose hooked cross-section shrinks there).
+struct ThinnedSheet {
+  TriangleMesh mesh;  ///< closed and outward-oriented
+  /// The least fraction of the thickness a point kept (1: none thinned).
+  double thinnest_fraction = 1.0;
+};
+
+/// The least fraction of the thickness thinning leaves a point.
+inline constexpr double kThinnestSheet = 1.0 / 64.0;
+
+/// The sheet thickened along its normals, thinned where that cuts itself
+/// (ThinnedSheet). Returns nothing when thicken_sheet along the normals
+/// does, when the points kThinnestSheet of the way still cut, or when
+/// thinning touches more than a quarter of the sheet's area (a sheet
+/// folded flat along its length is no leaf with a sharp edge).
+[[nodiscard]] std::optional<ThinnedSheet> thicken_sheet_thinning(
+    const lsys::Sheet& sheet, double thickness_mm);
+
 }  // namespace lsolid

@@ -398,6 +398,29 @@ TEST(Parts, MakesASmallSheetFoldedTooSharplyItsThickenedHull) {
               1e-12);
 }
 
+TEST(Parts, ThinsASheetOnlyWhereAnEdgeCurlsTighterThanItsThickness) {
+  // A strip 20 mm long whose last mm turns back in a half circle of radius
+  // 0.3 mm: no plate 0.93 mm thick follows the curl, none along one normal.
+  lsys::Skeleton s;
+  s.sheets = {grid_sheet(200, 2, [](double u, double v) {
+    const double along = 20.0 * u;
+    if (along <= 19.0) return glm::dvec3(along, 5.0 * v, 0.0);
+    const double a = (along - 19.0) / 0.3;
+    return glm::dvec3(19.0 + 0.3 * std::sin(a), 5.0 * v,
+                      0.3 * (1.0 - std::cos(a)));
+  })};
+  const PartSet set = build_parts(s, {.wall_mm = 0.8});
+  ASSERT_EQ(set.parts.size(), 1U);
+  EXPECT_EQ(set.thinned_sheets, 1U);
+  EXPECT_EQ(set.hulled_sheets, 0U);
+  expect_printable(set.parts[0].mesh);
+  const double thickness = plate_thickness_mm(0.8, 0.05);
+  EXPECT_LT(set.thinnest_sheet_mm, thickness / 2.0);
+  // The flat of the strip keeps its full thickness: its volume is at
+  // least that of 18 mm of it.
+  EXPECT_GT(signed_volume(set.parts[0].mesh), 18.0 * 5.0 * thickness);
+}
+
 TEST(Parts, RefusesALargeSheetFoldedTooSharplyToThicken) {
   lsys::Skeleton s;
   s.sheets = {folded_sheet(20.0)};

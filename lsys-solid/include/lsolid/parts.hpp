@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,10 @@ struct PartSet {
   /// Of those, sheets a few walls across too bent to thicken cleanly, made
   /// the convex hull of their thickened points instead.
   std::size_t hulled_sheets = 0;
+  /// Of those, sheets thinner than the plate where they fold more sharply
+  /// than it is thick, and the least thickness left there.
+  std::size_t thinned_sheets = 0;
+  double thinnest_sheet_mm = std::numeric_limits<double>::infinity();
   /// Polygons without area or whose outline crosses itself: not printed.
   std::size_t skipped_polygons = 0;
 };

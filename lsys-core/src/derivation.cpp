@@ -15,6 +15,7 @@
 
 #include "lsys/diagnostic.hpp"
 #include "lsys/random.hpp"
+#include "queries.hpp"
 #include "rule_index.hpp"
 #include "size_model.hpp"
 
@@ -48,8 +49,10 @@ class Derivation::Impl {
     }
     // cpfg's variables and random numbers make each value depend on what
     // was rewritten before it: the string is rewritten in cpfg's order.
-    is_streaming_ =
-        !is_context_sensitive_ && !has_cut(grammar) && !grammar.uses_variables;
+    // A query's answer depends on the whole string before it, drawn.
+    has_queries_ = uses_queries(grammar);
+    is_streaming_ = !is_context_sensitive_ && !has_cut(grammar) &&
+                    !grammar.uses_variables && !has_queries_;
     variables_ = initial_variables(grammar);
     check_prediction();
     if (is_streaming_) {
@@ -355,13 +358,28 @@ class Derivation::Impl {
   }
 
   // ABOP p. 32: the right context may enter a branch where the pattern has
-  // `[`; other branches are skipped; it never leaves the current branch.
+  // `[`; other branches are skipped; it never leaves the current branch
+  // but after cpfg's `=`, which skips to the branch's end.
   bool match_right(const ModuleString& s, std::size_t i,
                    const std::vector<PatternModule>& pattern) {
     std::size_t j = i + 1;
     open_.clear();
     for (const PatternModule& p : pattern) {
+      if (p.to_branch_end) {
+        // cpfg's `=` (generate.c's skipright): on to the `]` that closes
+        // the current branch, or the end of the string.
+        while (j < s.size() && s.symbol(j) != kBranchClose) {
+          j = s.symbol(j) == kBranchOpen ? match_[j] + 1 : j + 1;
+        }
+        continue;
+      }
       if (p.symbol == kBranchClose) {
+        if (open_.empty()) {
+          // After `=`, leaving the branch the predecessor stands in.
+          if (j >= s.size() || s.symbol(j) != kBranchClose) return false;
+          ++j;
+          continue;
+        }
         j = match_[open_.back()] + 1;
         open_.pop_back();
         continue;
@@ -403,7 +421,16 @@ class Derivation::Impl {
     }
     const auto params = s.parameters(i);
     slots_.insert(slots_.end(), params.begin(), params.end());
-    if (!rule.right_context.empty() && !match_right(s, i, rule.right_context)) {
+    // cpfg's predecessor of several modules matches them as they stand
+    // (generate.c compares the string module by module).
+    std::size_t last = i;
+    for (const PatternModule& m : rule.predecessor_rest) {
+      if (++last >= s.size() || !same_module(s, last, m)) return false;
+      const auto more = s.parameters(last);
+      slots_.insert(slots_.end(), more.begin(), more.end());
+    }
+    if (!rule.right_context.empty() &&
+        !match_right(s, last, rule.right_context)) {
       return false;
     }
     return statements_and_condition_hold(rule, slots_, &variables_);
@@ -511,6 +538,8 @@ class Derivation::Impl {
     cut(string_);
     for (step_ = 0; step_ < n_; ++step_) {
       const int step = step_;
+      // cpfg answers the queries before StartEach (generate.c's Derive).
+      if (has_queries_) answer_queries(grammar_, string_, &variables_);
       run(grammar_.start_each);
       if (is_context_sensitive_) {
         if (string_.memory_bytes() + next.memory_bytes() +
@@ -533,6 +562,7 @@ class Derivation::Impl {
         }
         if (rule != nullptr) {
           append_successor(next, rule->successor, slots_, k + 1);
+          i += rule->predecessor_rest.size();
         } else {
           check_room(next, string_.parameters(i).size());
           next.push_back(string_, i);
@@ -564,6 +594,7 @@ class Derivation::Impl {
   bool is_context_sensitive_ = false;
   bool is_stochastic_ = false;
   bool is_streaming_ = true;
+  bool has_queries_ = false;
   bool is_counting_ = true;
   std::vector<bool> stochastic_symbol_;
 

@@ -22,6 +22,7 @@
 #include "lsys/module_string.hpp"
 #include "lsys/random.hpp"
 #include "lsys/turtle.hpp"
+#include "queries.hpp"
 #include "rule_index.hpp"
 #include "size_model.hpp"
 
@@ -226,6 +227,24 @@ class Interpreter {
     }
   }
 
+  // Writes the turtle's answer into each query module, walking the string
+  // as the final interpretation will (homomorphism included), as cpfg's
+  // environment pass does before each step (cpfg's interpret.c).
+  void answer_queries(ModuleString& modules) {
+    for (std::size_t i = 0; i < modules.size(); ++i) {
+      const SymbolId symbol = modules.symbol(i);
+      const TurtleCommand command = grammar_.commands[symbol];
+      if (is_query(command)) {
+        const glm::dvec3 v = answer(command);
+        const std::span<double> out = modules.mutable_parameters(i);
+        for (std::size_t k = 0; k < std::min<std::size_t>(out.size(), 3); ++k)
+          out[k] = v[static_cast<glm::length_t>(k)];
+        continue;
+      }
+      interpret(symbol, modules.parameters(i), modules.generation(i), 0);
+    }
+  }
+
   Skeleton finish() {
     skeleton_.unclosed_polygons += polygons_.size();
     polygons_.clear();
@@ -276,6 +295,26 @@ class Interpreter {
       return;
     }
     execute(grammar_.commands[symbol], params, generation);
+  }
+
+  // cpfg's coordinates are Y-up: lsolid's (x, y, z) is cpfg's (x, z, −y)
+  // (docs/turtle.md), and cpfg keeps U = −(H × L) where lsolid keeps
+  // H × L, so cpfg's up is lsolid's −up.
+  glm::dvec3 answer(TurtleCommand command) const {
+    const Turtle& t = state_.turtle;
+    const auto cpfg = [](const glm::dvec3& v) {
+      return glm::dvec3(v.x, v.z, -v.y);
+    };
+    switch (command) {
+      case TurtleCommand::QueryHeading:
+        return cpfg(t.heading());
+      case TurtleCommand::QueryLeft:
+        return cpfg(t.left());
+      case TurtleCommand::QueryUp:
+        return -cpfg(t.up());
+      default:
+        return cpfg(t.position());
+    }
   }
 
   // cpfg's `~l(sx, sy, sz)` (one scale for all, or none for 1): the
@@ -600,6 +639,10 @@ class Interpreter {
       case TurtleCommand::None:
       case TurtleCommand::Surface:  // drawn by interpret, which knows which
       case TurtleCommand::Cut:
+      case TurtleCommand::QueryPosition:  // answered by answer_queries
+      case TurtleCommand::QueryHeading:
+      case TurtleCommand::QueryLeft:
+      case TurtleCommand::QueryUp:
         return;
       case TurtleCommand::Draw:
         if (!polygons_.empty()) {
@@ -1083,6 +1126,28 @@ ParseError nothing_drawn_error(const Grammar& grammar,
                       "the L-system draws no segment and no polygon; modules "
                       "without a turtle meaning draw nothing (map them with "
                       "an alias block, e.g. 'aliases: Fl=F Fr=F')");
+}
+
+bool uses_queries(const Grammar& grammar) {
+  const auto writes_query = [&](const Successor& s) {
+    return std::any_of(s.symbols().begin(), s.symbols().end(), [&](SymbolId m) {
+      return is_query(grammar.commands[m]);
+    });
+  };
+  if (writes_query(grammar.axiom)) return true;
+  return std::any_of(
+             grammar.productions.begin(), grammar.productions.end(),
+             [&](const Production& p) { return writes_query(p.successor); }) ||
+         std::any_of(
+             grammar.decompositions.begin(), grammar.decompositions.end(),
+             [&](const Production& p) { return writes_query(p.successor); });
+}
+
+void answer_queries(const Grammar& grammar, ModuleString& modules,
+                    Variables* variables) {
+  Interpreter interpreter(grammar, {});
+  interpreter.use_variables(variables);
+  interpreter.answer_queries(modules);
 }
 
 Skeleton interpret_string(const Grammar& grammar, const ModuleString& modules,

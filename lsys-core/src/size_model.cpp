@@ -247,6 +247,13 @@ std::optional<SizePrediction> exact_size(const Grammar& grammar, int n) {
 
 std::optional<SizePrediction> size_lower_bound(const Grammar& grammar, int n) {
   if (has_cut(grammar)) return std::nullopt;
+  // A predecessor of several modules takes its followers with it, which a
+  // count per module cannot bound.
+  if (std::any_of(
+          grammar.productions.begin(), grammar.productions.end(),
+          [](const Production& p) { return !p.predecessor_rest.empty(); })) {
+    return std::nullopt;
+  }
   return CountMatrix(grammar, true).predict(n);
 }
 

@@ -63,6 +63,10 @@ int max_parameters(TurtleCommand command) noexcept {
       return 2;
     case TurtleCommand::SetTropism:
     case TurtleCommand::Surface:
+    case TurtleCommand::QueryPosition:
+    case TurtleCommand::QueryHeading:
+    case TurtleCommand::QueryLeft:
+    case TurtleCommand::QueryUp:
       return 3;
     case TurtleCommand::CylinderTangents:
       return 2;

@@ -319,12 +319,40 @@ TEST(Cpfg, RefusesWhatLsolidCannotDrawByNameAtItsPlace) {
             "view names) is not supported by lsolid");
   EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: F\nF --> F@bo(2)\n"),
             "3:8: '@bo' (a circle) is not supported by lsolid");
-  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: A\nA > ?P(x,y) --> B\n"),
-            "3:5: '?' (a sub-L-system call or a query) is not supported by "
-            "lsolid");
+  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: A\nA > ?E(x) --> B\n"),
+            "3:5: '?E' (a query of the environment, which needs cpfg's "
+            "environment programs) is not supported by lsolid");
+  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: A?(2,1)B$\n"),
+            "2:9: '?' (a sub-L-system call) is not supported by lsolid");
   EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: {(1)F}(1)\n"),
             "2:8: cpfg's '{(n)' (a generalized cylinder) is not supported; "
             "write '{' for a polygon");
+}
+
+// cpfg's environment pass (interpret.c): before each step the turtle walks
+// the string and each query takes the position or frame where it stands, in
+// cpfg's Y-up coordinates, so a context can read where the apex is.
+TEST(Cpfg, AnswersQueriesWithThePositionAndFrameBeforeEachStep) {
+  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 1\n"
+                         "Axiom: F(2)+(90)F(3)?P(0,0,0)?H(0,0,0)?L(0,0,0)"
+                         "?U(0,0,0)\n"),
+            "F(2)+(90)F(3) ?P(-3,2,0) ?H(-1,0,0) ?L(0,-1,0) ?U(0,0,-1)");
+  // cpfg's `&` turns H toward its U, (0, 0, −1) at the start.
+  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 1\n"
+                         "Axiom: &(90)F?P(0,0,0)?U(0,0,0)\n"),
+            "&(90)F ?P(0,0,-1) ?U(0,-1,0)");
+  // The apex grows while it is below y = 3, reading its height from the
+  // query beside it, and stops the step after; a query with fewer
+  // parameters takes the first coordinates only.
+  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 6\n"
+                         "Axiom: A?P(0,0)\n"
+                         "A > ?P(x,y) : y < 3 --> FA\n"),
+            "FFFA ?P(0,3)");
+  // The homomorphism draws what the turtle walks, as in cpfg.
+  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 1\n"
+                         "Axiom: B?P(0,0,0)\n"
+                         "homomorphism\nB --> F(5)\nendlsystem\n"),
+            "B ?P(0,5,0)");
 }
 
 TEST(Cpfg, RefusesArraysAndRingLsystemsAtTheirPlace) {
@@ -427,6 +455,51 @@ TEST(Cpfg, HasNoLabelsSoAWordBeforeAColonIsAPredecessor) {
   EXPECT_EQ(derived_cpfg("#define LEFT 1\n" + std::string(kHead) +
                          "Axiom: A\nA : LEFT --> F\nendlsystem\n"),
             "F");
+}
+
+// cpfg's modules are single characters: `FA` is F then A, and a
+// predecessor of several modules replaces them all (generate.c).
+TEST(Cpfg, ReadsLettersAsModulesAndRewritesAPredecessorOfSeveral) {
+  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 2\n"
+                         "Axiom: FAFB\nFA --> FFA\n"),
+            "FFFAFB");
+  // The modules must stand together; the parameters bind in order, then
+  // the right context's.
+  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 1\n"
+                         "Axiom: A(1)B(2)C(3) A(4)[B(5)]C(6)\n"
+                         "A(x)B(y) > C(z) --> D(x+y+z)\n"),
+            "D(6)C(3)A(4)[B(5)]C(6)");
+  const Grammar g =
+      cpfg("Lsystem: 1\nderivation length: 1\nAxiom: FA\nFA --> FFA\n");
+  EXPECT_EQ(interpret(g).segments.size(), 2U);  // F F A
+  // A homomorphism's predecessor of several letters is read as one name,
+  // which rewrites the same where its letters stand together.
+  EXPECT_EQ(to_string(derive(cpfg("Lsystem: 1\nAxiom: Sl\nhomomorphism\n"
+                                  "Sl --> F\nendlsystem\n")),
+                      cpfg("Lsystem: 1\nAxiom: Sl\nhomomorphism\n"
+                           "Sl --> F\nendlsystem\n")
+                          .alphabet),
+            "Sl");
+  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: A\nA * --> B\n"),
+            "3:3: '*' matches any module only in a context");
+}
+
+// cpfg's `=` in a right context skips the rest of the branch (generate.c's
+// skipright), so a context can look past a branch, or out of its own.
+TEST(Cpfg, SkipsToTheEndOfABranchForAnEqualsSignInARightContext) {
+  // Past the first branch into the second.
+  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 1\n"
+                         "Axiom: F[+A][-D]\nF > [=][-D=] --> G\n"),
+            "G[+A][-D]");
+  // Out of the predecessor's branch: A then the end of its branch, then g.
+  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 1\n"
+                         "Axiom: [BAC[D]E]g [BA]h\nB > A=]g --> X\n"),
+            "[XAC[D]E]g[BA]h");
+  // The branch's modules bind, `=` binds nothing.
+  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 1\n"
+                         "Axiom: A(1)[B(2)C]B(3)\n"
+                         "A(x) > [B(y)=]B(z) --> A(x+y+z)\n"),
+            "A(6)[B(2)C]B(3)");
 }
 
 TEST_F(CpfgFiles, ReadsTheFunctionsTheViewFileNames) {

@@ -37,6 +37,9 @@ struct PatternModule {
   SymbolId symbol = 0;
   int parameter_count = 0;
   std::size_t offset = 0;  ///< byte offset in the source
+  /// cpfg's `=` in a right context: matches the rest of the current branch,
+  /// up to its `]` (which the pattern may then match to leave the branch).
+  bool to_branch_end = false;
 };
 
 /// The right-hand side of a production (or the axiom), kept flat: a name,
@@ -102,6 +105,10 @@ class Successor {
 struct Production {
   std::vector<PatternModule> left_context;
   PatternModule predecessor;
+  /// The further modules of a strict predecessor of several (cpfg's
+  /// `F(n) A > ?P(x,y,z)`): they must follow the first in the string with
+  /// nothing between, and the successor replaces them all.
+  std::vector<PatternModule> predecessor_rest;
   /// May contain `[` and `]` (ABOP p. 32); the left context may not.
   std::vector<PatternModule> right_context;
   std::optional<Expression> condition;
@@ -117,9 +124,12 @@ struct Production {
   Successor successor;
   std::size_t offset = 0;  ///< byte offset of the production
 
-  /// True when the production has a left or right context.
+  /// True when the production has a left or right context, or a
+  /// predecessor of several modules: whether it applies depends on the
+  /// module's neighbours.
   [[nodiscard]] bool is_context_sensitive() const noexcept {
-    return !left_context.empty() || !right_context.empty();
+    return !left_context.empty() || !right_context.empty() ||
+           !predecessor_rest.empty();
   }
   /// True when cpfg's statements run before or after its condition (and
   /// so its successor reads slots they wrote, not the module's values).

@@ -30,6 +30,12 @@ class ModuleString {
     return {params_.data() + entries_[i].first_parameter,
             entries_[i].parameter_count};
   }
+  /// The parameters of module i, to overwrite (cpfg's queries are answered
+  /// in place). @pre `i < size()`.
+  [[nodiscard]] std::span<double> mutable_parameters(std::size_t i) {
+    return {params_.data() + entries_[i].first_parameter,
+            entries_[i].parameter_count};
+  }
   /// The derivation step that created module i. @pre `i < size()`.
   [[nodiscard]] std::uint32_t generation(std::size_t i) const {
     return entries_[i].generation;

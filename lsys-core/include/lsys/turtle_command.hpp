@@ -76,7 +76,23 @@ enum class TurtleCommand {
   /// cpfg's `@!(n)`: n points around the rings swept from a contour
   /// (`contour sides` without n).
   ContourSides,
+  /// cpfg's queries `?P(x, y, z)`, `?H`, `?L` and `?U`: before each
+  /// derivation step the turtle walks the string and writes its position,
+  /// heading, left or up where the module stands into the module's
+  /// parameters, in cpfg's coordinates (Y up, U = −H × L).
+  QueryPosition,
+  QueryHeading,
+  QueryLeft,
+  QueryUp,
 };
+
+/// True for the query commands, whose parameters the turtle writes.
+[[nodiscard]] constexpr bool is_query(TurtleCommand command) noexcept {
+  return command == TurtleCommand::QueryPosition ||
+         command == TurtleCommand::QueryHeading ||
+         command == TurtleCommand::QueryLeft ||
+         command == TurtleCommand::QueryUp;
+}
 
 /// The command a module name has without aliases, if it has one.
 [[nodiscard]] std::optional<TurtleCommand> builtin_command(

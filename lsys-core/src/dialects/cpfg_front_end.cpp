@@ -48,6 +48,12 @@ const std::vector<SymbolCommand> kSymbols = [] {
           // Discs of the width, or of the diameter given (blackbox.c).
           {"@c", TurtleCommand::DiscAcrossUp, std::nullopt, 1},
           {"@o", TurtleCommand::DiscFacingViewer, std::nullopt, 1},
+          // Queries: the turtle writes its position or frame into them
+          // before each step (docs/dialects/cpfg.md).
+          {"?P", TurtleCommand::QueryPosition, std::nullopt, 3},
+          {"?H", TurtleCommand::QueryHeading, std::nullopt, 3},
+          {"?L", TurtleCommand::QueryLeft, std::nullopt, 3},
+          {"?U", TurtleCommand::QueryUp, std::nullopt, 3},
           // The end of a sub-L-system (whose call `?` is refused); no drawing.
           {"$", TurtleCommand::None, std::nullopt, std::nullopt},
           // Back-side colours, twist and texture: about rendering, nothing
@@ -78,7 +84,11 @@ const std::vector<RefusedName> kRefused = {
     {"@Ti", "the newer tropism model"},
     {"@Td", "the newer tropism model"},
     {"~", "a predefined surface that no surface: line of the view names"},
-    {"?", "a sub-L-system call or a query"},
+    {"?E",
+     "a query of the environment, which needs cpfg's environment "
+     "programs"},
+    {"?Q", "a query of the turtle's frame as a quaternion"},
+    {"?", "a sub-L-system call"},
 };
 
 // The view file cpfg would be given: the one named, else the `.v` of the
@@ -111,6 +121,8 @@ Draft notation(const CpfgView& view) {
   draft.syntax.fixed_arity = false;
   draft.syntax.extra_turtle_parameters = true;
   draft.syntax.cpfg_statements = true;
+  draft.syntax.single_character_modules = true;
+  draft.syntax.skip_to_branch_end = true;
   Settings& s = draft.defaults;
   s.roll = RollConvention::Cpfg;
   s.angle_deg = view.angle_deg.value_or(45.0);

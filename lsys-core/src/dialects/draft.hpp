@@ -124,6 +124,14 @@ struct Syntax {
   /// L-system Explorer's mathjs expressions: `and`, `or`, `not`, `mod`,
   /// and statements without a last `;` (ExpressionScope::mathjs).
   bool mathjs = false;
+  /// Every module is one character besides the notation's own names
+  /// (cpfg: `FA` is F then A, `@Gc` one module), and a predecessor may be
+  /// several modules. Without it, a predecessor's name is one module,
+  /// however long.
+  bool single_character_modules = false;
+  /// cpfg's `=` in a right context skips to the end of the current branch
+  /// (`A > [B=]C`, `A > F=]g`); without it `=` is a module.
+  bool skip_to_branch_end = false;
   /// Only `p1:`, `P12:` are labels (L-system Explorer): `P : * → …` is the
   /// module P with the condition "always".
   bool numbered_labels = false;

@@ -269,6 +269,14 @@ class GrammarBuilder : TextScan {
       }
     }
     for (const ProductionText& p : draft_.productions) {
+      // cpfg rewrites a predecessor of several letters, and lsolid does so
+      // in productions; a homomorphism or decomposition rule's letters are
+      // read as one name, as they rewrite the same where the letters only
+      // stand together (docs/dialects/cpfg.md).
+      if (draft_.syntax.single_character_modules &&
+          p.section == Section::Productions) {
+        continue;
+      }
       const Lhs lhs = split_lhs(p.lhs);
       std::size_t end = find_in(lhs.predecessor, "(");
       if (end == std::string::npos) end = lhs.predecessor.end;
@@ -620,10 +628,25 @@ class GrammarBuilder : TextScan {
       }
       out.push_back(PatternModule{
           raw.symbol, static_cast<int>(raw.arguments.size()), raw.offset});
+      out.back().to_branch_end =
+          allow_brackets && draft_.syntax.skip_to_branch_end &&
+          grammar_.alphabet.name(raw.symbol) == "=" && raw.arguments.empty();
+    }
+    // After cpfg's `=`, a `]` may leave the branch the predecessor is in:
+    // only the rest is checked for balance.
+    std::size_t first = 0;
+    for (std::size_t i = 0; i + 1 < out.size(); ++i) {
+      if (out[i].to_branch_end && out[i + 1].symbol == kBranchClose &&
+          std::none_of(
+              out.begin(), out.begin() + static_cast<long>(i),
+              [](const PatternModule& m) { return m.symbol == kBranchOpen; })) {
+        first = i + 2;
+      }
     }
     check_brackets(
-        out.size(), [&](std::size_t i) { return out[i].symbol; },
-        [&](std::size_t i) { return out[i].offset; }, true);
+        out.size() - first,
+        [&](std::size_t i) { return out[first + i].symbol; },
+        [&](std::size_t i) { return out[first + i].offset; }, true);
     return out;
   }
 
@@ -637,10 +660,18 @@ class GrammarBuilder : TextScan {
     }
     const std::vector<PatternModule> predecessor =
         pattern(lhs.predecessor, slots, false, "brackets cannot be rewritten");
-    if (predecessor.size() != 1) {
+    if (predecessor.empty() ||
+        (predecessor.size() > 1 && (!draft_.syntax.single_character_modules ||
+                                    text.section != Section::Productions))) {
       fail(lhs.predecessor.begin, "the predecessor must be a single module");
     }
+    for (const PatternModule& m : predecessor) {
+      if (m.symbol == kAnyModule) {
+        fail(m.offset, "'*' matches any module only in a context");
+      }
+    }
     p.predecessor = predecessor.front();
+    p.predecessor_rest.assign(predecessor.begin() + 1, predecessor.end());
     p.offset = p.predecessor.offset;
     if (!lhs.right.empty()) {
       p.right_context = pattern(lhs.right, slots, true, "");

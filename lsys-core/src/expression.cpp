@@ -217,6 +217,102 @@ struct Node {
   int c = -1;  // Select's third operand
 };
 
+// A logical line of Python: its first and last bytes of code (comments
+// and trailing blanks left out), and its indentation in columns.
+struct PythonLine {
+  std::size_t begin;
+  std::size_t end;
+  int indent;
+};
+
+bool is_word_byte(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+}
+
+// Python's lines in bytes [begin, end) of `text`: a line goes on while a
+// bracket is open or it ends with `\`; `#` outside strings starts a
+// comment; a tab indents to the next multiple of 8 (Python's tokenizer).
+// The first line may start inside a line (after a rule's colon).
+std::vector<PythonLine> python_lines(std::string_view text, std::size_t begin,
+                                     std::size_t end) {
+  std::vector<PythonLine> lines;
+  std::size_t i = begin;
+  while (i < end) {
+    std::size_t line_start = i;
+    while (line_start > 0 && text[line_start - 1] != '\n') --line_start;
+    int column = 0;
+    std::size_t first = line_start;
+    for (; first < end && (text[first] == ' ' || text[first] == '\t' ||
+                           text[first] == '\r' || first < i);
+         ++first) {
+      column = text[first] == '\t' ? (column / 8 + 1) * 8 : column + 1;
+    }
+    int depth = 0;
+    char quote = 0;
+    std::size_t code_end = first;
+    std::size_t j = first;
+    for (; j < end; ++j) {
+      const char c = text[j];
+      if (quote != 0) {
+        if (c == '\\') {
+          ++j;
+        } else if (c == quote) {
+          quote = 0;
+        }
+        code_end = j + 1;
+        continue;
+      }
+      if (c == '#') {
+        while (j < end && text[j] != '\n') ++j;
+        if (depth > 0) continue;
+        break;
+      }
+      if (c == '\n') {
+        if (depth > 0) continue;
+        std::size_t k = code_end;
+        if (k > first && text[k - 1] == '\\') continue;
+        break;
+      }
+      if (c == '\'' || c == '"') quote = c;
+      if (c == '(' || c == '[' || c == '{') ++depth;
+      if ((c == ')' || c == ']' || c == '}') && depth > 0) --depth;
+      if (c != ' ' && c != '\t' && c != '\r') code_end = j + 1;
+    }
+    if (code_end > first) lines.push_back(PythonLine{first, code_end, column});
+    i = j + 1;
+  }
+  return lines;
+}
+
+// The first `:` of bytes [from, end) outside brackets and strings.
+std::size_t python_colon(std::string_view text, std::size_t from,
+                         std::size_t end) {
+  int depth = 0;
+  char quote = 0;
+  for (std::size_t j = from; j < end; ++j) {
+    const char c = text[j];
+    if (quote != 0) {
+      if (c == quote) quote = 0;
+    } else if (c == '\'' || c == '"') {
+      quote = c;
+    } else if (c == '(' || c == '[' || c == '{') {
+      ++depth;
+    } else if (c == ')' || c == ']' || c == '}') {
+      --depth;
+    } else if (c == ':' && depth == 0) {
+      return j;
+    }
+  }
+  return std::string_view::npos;
+}
+
+// True when bytes from `at` hold the word `word` whole.
+bool starts_word(std::string_view text, std::size_t at, std::size_t end,
+                 std::string_view word) {
+  return text.substr(at, end - at).starts_with(word) &&
+         (at + word.size() >= end || !is_word_byte(text[at + word.size()]));
+}
+
 // Recursive descent over bytes [begin, end) of the source, building a tree
 // that is folded and flattened to postfix code afterwards.
 class Compiler {
@@ -274,7 +370,7 @@ class Compiler {
   // mathjs's operator words (`a and not b`), as whole words only, so that
   // a parameter named `order` is not `or` and `der`.
   bool accept_word(std::string_view word) {
-    if (!scope_.mathjs) return false;
+    if (!scope_.mathjs && !scope_.python) return false;
     skip_space();
     if (!text_.substr(pos_).starts_with(word)) return false;
     const std::size_t end = pos_ + word.size();
@@ -324,6 +420,18 @@ class Compiler {
   // cpfg's `c ? a : b`, right-associative, below `||`.
   int parse_conditional() {
     const int condition = parse_or();
+    if (scope_.python) {
+      // Python's `yes if condition else no`.
+      skip_space();
+      const std::size_t at = pos_;
+      if (!accept_word("if")) return condition;
+      const int test = parse_or();
+      if (!accept_word("else")) fail(pos_, "expected 'else' after 'if'");
+      const int no = parse_conditional();
+      const int node = add(Op::Select, at, test, condition);
+      nodes_.back().c = no;
+      return node;
+    }
     if (!scope_.cpfg) return condition;
     skip_space();
     const std::size_t at = pos_;
@@ -409,9 +517,20 @@ class Compiler {
       if ((!text_.substr(pos_).starts_with("**") && accept("*")) ||
           accept("\u00D7") || accept("\u00B7")) {
         left = binary(Op::Multiply, at, left, parse_unary());
+      } else if (scope_.python && accept("//")) {
+        left = fold(
+            add(Op::Floor, at, binary(Op::Divide, at, left, parse_unary())));
       } else if (accept("/")) {
         left = binary(Op::Divide, at, left, parse_unary());
-      } else if ((scope_.cpfg && accept("%")) || accept_word("mod")) {
+      } else if (scope_.python && accept("%")) {
+        // Python's remainder takes the divisor's sign: a − b·⌊a/b⌋.
+        const int b = parse_unary();
+        const int quotient =
+            fold(add(Op::Floor, at, binary(Op::Divide, at, left, b)));
+        left = binary(Op::Subtract, at, left,
+                      binary(Op::Multiply, at, b, quotient));
+      } else if ((scope_.cpfg && accept("%")) ||
+                 (scope_.mathjs && accept_word("mod"))) {
         left = binary(Op::Modulo, at, left, parse_unary());
       } else {
         return left;
@@ -621,13 +740,17 @@ class Compiler {
 
   int parse_call(const std::string& name, std::size_t at) {
     if (scope_.cpfg && name == "func") return parse_func(at);
-    if (scope_.mathjs && name == "random") return parse_random(at);
+    if ((scope_.mathjs && name == "random") ||
+        (scope_.python && (name == "random" || name == "uniform"))) {
+      return parse_random(at);
+    }
     const Function* function = nullptr;
     for (const Function& f : kFunctions) {
       if (f.name == name) function = &f;
     }
     if (function == nullptr || (function->cpfg_only && !scope_.cpfg) ||
-        (function->mathjs_only && !scope_.mathjs)) {
+        (function->mathjs_only && !scope_.mathjs &&
+         !(scope_.python && name == "pow"))) {
       fail(at, "'" + name + "' is not a function");
     }
     accept("(");
@@ -734,7 +857,219 @@ class Compiler {
     return code;
   }
 
+  // The Python body of an L-Py rule (parse_python_statements): the
+  // local kProducedLocal starts at 0 and each `produce` sets it to its
+  // number; what follows a `produce` in its block, or a block that may
+  // have produced, is skipped when one has.
+  std::vector<Instruction> compile_python(int& stack_depth) {
+    const std::string_view whole = text_;
+    lines_ = python_lines(whole, pos_, whole.size());
+    std::vector<Instruction> code;
+    const std::size_t at = pos_;
+    code.push_back(Instruction{.op = Op::Constant, .offset = at});
+    produced_store_ = store_for(std::string(kProducedLocal), at);
+    code.push_back(produced_store_);
+    depth_ = 1;
+    std::size_t li = 0;
+    if (!lines_.empty()) python_block(code, li, lines_.front().indent, whole);
+    if (li < lines_.size()) fail(lines_[li].begin, "unexpected indentation");
+    text_ = whole;
+    stack_depth = std::max(1, depth_);
+    if (stack_depth > kMaxStack) fail(at, "statements are nested too deeply");
+    return code;
+  }
+
  private:
+  bool python_block(std::vector<Instruction>& code, std::size_t& li, int indent,
+                    std::string_view whole) {
+    const Nesting guard(*this);
+    std::vector<std::size_t> skips;
+    bool produced = false;
+    while (li < lines_.size() && lines_[li].indent >= indent) {
+      if (lines_[li].indent > indent) {
+        fail(lines_[li].begin, "unexpected indentation");
+      }
+      if (produced) {
+        code.push_back(Instruction{.op = Op::Parameter,
+                                   .slot = produced_store_.slot,
+                                   .offset = lines_[li].begin});
+        code.push_back(Instruction{.op = Op::Not, .offset = lines_[li].begin});
+        skips.push_back(jump(code, Op::JumpIfZero));
+      }
+      produced = python_statement(code, li, indent, whole) || produced;
+    }
+    for (const std::size_t skip : skips) land(code, skip);
+    return produced;
+  }
+
+  // One statement, compound or simple, from line li on; returns whether it
+  // may have produced.
+  bool python_statement(std::vector<Instruction>& code, std::size_t& li,
+                        int indent, std::string_view whole) {
+    const PythonLine& line = lines_[li];
+    text_ = whole.substr(0, line.end);
+    pos_ = line.begin;
+    if (starts_word(whole, pos_, line.end, "if")) {
+      pos_ += 2;
+      return python_if(code, li, indent, whole);
+    }
+    for (const std::string_view word : {"elif", "else"}) {
+      if (starts_word(whole, pos_, line.end, word)) {
+        fail(pos_, "'" + std::string(word) + "' without 'if'");
+      }
+    }
+    ++li;
+    const bool produced = python_simple(code);
+    text_ = whole;
+    return produced;
+  }
+
+  // `if` (or `elif`) at pos_ of line li: the condition, its suite, and
+  // the `elif` or `else` that follows at the same indentation.
+  bool python_if(std::vector<Instruction>& code, std::size_t& li, int indent,
+                 std::string_view whole) {
+    const PythonLine line = lines_[li];
+    const std::size_t colon = python_colon(whole, pos_, line.end);
+    if (colon == std::string_view::npos) fail(line.end, "expected ':'");
+    text_ = whole.substr(0, colon);
+    expression_into(code);
+    skip_space();
+    if (pos_ < colon) fail(pos_, "expected ':'");
+    const std::size_t to_else = jump(code, Op::JumpIfZero);
+    bool produced = python_suite(code, li, indent, colon + 1, whole);
+    if (li < lines_.size() && lines_[li].indent == indent) {
+      const PythonLine& next = lines_[li];
+      const bool is_elif = starts_word(whole, next.begin, next.end, "elif");
+      if (is_elif || starts_word(whole, next.begin, next.end, "else")) {
+        const std::size_t to_end = jump(code, Op::Jump);
+        land(code, to_else);
+        text_ = whole.substr(0, next.end);
+        if (is_elif) {
+          pos_ = next.begin + 4;
+          produced = python_if(code, li, indent, whole) || produced;
+        } else {
+          pos_ = next.begin + 4;
+          if (!accept(":")) fail(pos_, "expected ':' after 'else'");
+          produced = python_suite(code, li, indent, pos_, whole) || produced;
+        }
+        land(code, to_end);
+        text_ = whole;
+        return produced;
+      }
+    }
+    land(code, to_else);
+    text_ = whole;
+    return produced;
+  }
+
+  // What follows a compound statement's colon: a simple statement on the
+  // same line, or a block of deeper lines.
+  bool python_suite(std::vector<Instruction>& code, std::size_t& li, int indent,
+                    std::size_t after_colon, std::string_view whole) {
+    const PythonLine line = lines_[li++];
+    text_ = whole.substr(0, line.end);
+    pos_ = after_colon;
+    skip_space();
+    if (pos_ < line.end) {
+      const bool produced = python_simple(code);
+      text_ = whole;
+      return produced;
+    }
+    if (li >= lines_.size() || lines_[li].indent <= indent) {
+      fail(line.end, "expected an indented block after ':'");
+    }
+    return python_block(code, li, lines_[li].indent, whole);
+  }
+
+  // `pass`, `produce …`, or an assignment, up to the end of text_.
+  bool python_simple(std::vector<Instruction>& code) {
+    skip_space();
+    const std::size_t at = pos_;
+    const std::string word(peek_word());
+    bool produced = false;
+    if (word == "pass") {
+      pos_ += word.size();
+    } else if (word == kProducedLocal) {
+      code.push_back(Instruction{.op = Op::Constant,
+                                 .value = static_cast<double>(++produces_),
+                                 .offset = at});
+      code.push_back(produced_store_);
+      return true;  // the successor is the rule's, read apart
+    } else if (!word.empty() &&
+               is_name_start(static_cast<unsigned char>(word.front()))) {
+      pos_ += word.size();
+      skip_space();
+      const std::string_view rest = text_.substr(pos_);
+      Op op = Op::Constant;
+      for (const auto& [token, o] :
+           {std::pair{"+=", Op::Add}, std::pair{"-=", Op::Subtract},
+            std::pair{"*=", Op::Multiply}, std::pair{"/=", Op::Divide}}) {
+        if (rest.starts_with(token)) op = o;
+      }
+      if (op == Op::Constant &&
+          (!rest.starts_with("=") || rest.starts_with("=="))) {
+        refuse_python(at, word);
+      }
+      pos_ += op == Op::Constant ? 1 : 2;
+      if (word == kProducedLocal) fail(at, "'produce' cannot be assigned");
+      const Instruction store = store_for(word, at);
+      if (op != Op::Constant) {
+        code.push_back(load_for(word, at));
+        ++depth_;
+      }
+      expression_into(code);
+      if (op != Op::Constant) {
+        code.push_back(Instruction{.op = op, .offset = at});
+        --depth_;
+        depth_ = std::max(depth_, 2);
+      }
+      code.push_back(store);
+    } else {
+      refuse_python(at, word);
+    }
+    skip_space();
+    accept(";");
+    skip_space();
+    if (pos_ < text_.size()) {
+      fail(pos_, "unexpected '" + std::string(peek_code_point()) +
+                     "' after the statement");
+    }
+    return produced;
+  }
+
+  [[noreturn]] void refuse_python(std::size_t at, const std::string& word) {
+    fail(at, (word.empty() ? std::string("this Python statement")
+                           : "Python's '" + word + "'") +
+                 " is not supported in a rule body: lsolid runs assignments, "
+                 "if/elif/else, pass and produce (docs/dialects/lpy.md)");
+  }
+
+  // The instruction that reads (Parameter, Global) or writes (StoreSlot,
+  // StoreGlobal) a parameter, local or global already known by `name`.
+  std::optional<Instruction> variable(const std::string& name, std::size_t at,
+                                      Op slot_op, Op global_op) const {
+    for (std::size_t i = 0; i < scope_.parameters.size(); ++i) {
+      if (scope_.parameters[i] == name) {
+        return Instruction{
+            .op = slot_op, .slot = static_cast<std::uint32_t>(i), .offset = at};
+      }
+    }
+    if (const auto slot = local_slot(name)) {
+      return Instruction{.op = slot_op, .slot = *slot, .offset = at};
+    }
+    if (const auto slot = global_slot(name)) {
+      return Instruction{.op = global_op, .slot = *slot, .offset = at};
+    }
+    return std::nullopt;
+  }
+
+  Instruction load_for(const std::string& name, std::size_t at) const {
+    if (const auto load = variable(name, at, Op::Parameter, Op::Global)) {
+      return *load;
+    }
+    fail(at, "undefined name '" + name + "'");
+  }
+
   void statement_list(std::vector<Instruction>& code, bool until_brace) {
     const Nesting guard(*this);
     for (;;) {
@@ -908,18 +1243,8 @@ class Compiler {
   }
 
   Instruction store_for(const std::string& name, std::size_t at) {
-    for (std::size_t i = 0; i < scope_.parameters.size(); ++i) {
-      if (scope_.parameters[i] == name) {
-        return Instruction{.op = Op::StoreSlot,
-                           .slot = static_cast<std::uint32_t>(i),
-                           .offset = at};
-      }
-    }
-    if (const auto slot = local_slot(name)) {
-      return Instruction{.op = Op::StoreSlot, .slot = *slot, .offset = at};
-    }
-    if (const auto slot = global_slot(name)) {
-      return Instruction{.op = Op::StoreGlobal, .slot = *slot, .offset = at};
+    if (const auto store = variable(name, at, Op::StoreSlot, Op::StoreGlobal)) {
+      return *store;
     }
     if (scope_.assign_globals && scope_.globals != nullptr) {
       scope_.globals->push_back(name);
@@ -946,6 +1271,9 @@ class Compiler {
   std::vector<Node> nodes_;
   int nesting_ = 0;
   int depth_ = 0;
+  std::vector<PythonLine> lines_;
+  Instruction produced_store_;
+  int produces_ = 0;
 };
 
 }  // namespace
@@ -1141,15 +1469,64 @@ Expression parse_expression(std::shared_ptr<const SourceFile> source,
   return e;
 }
 
-Expression parse_statements(std::shared_ptr<const SourceFile> source,
-                            std::size_t begin, std::size_t end,
-                            const ExpressionScope& scope) {
+Expression Expression::slot_equals(std::shared_ptr<const SourceFile> source,
+                                   std::size_t offset, std::uint32_t slot,
+                                   double value) {
+  Expression e;
+  e.code_ = {Instruction{.op = Op::Parameter, .slot = slot, .offset = offset},
+             Instruction{.op = Op::Constant, .value = value, .offset = offset},
+             Instruction{.op = Op::Equal, .offset = offset}};
+  e.stack_depth_ = 2;
+  e.offset_ = offset;
+  e.source_ = std::move(source);
+  return e;
+}
+
+Expression Expression::statements(std::shared_ptr<const SourceFile> source,
+                                  std::size_t begin, std::size_t end,
+                                  const ExpressionScope& scope, bool python) {
   Compiler compiler(*source, begin, end, scope);
   Expression e;
-  e.adopt(compiler.compile_statements(e.stack_depth_), scope);
+  e.adopt(python ? compiler.compile_python(e.stack_depth_)
+                 : compiler.compile_statements(e.stack_depth_),
+          scope);
   e.offset_ = begin;
   e.source_ = std::move(source);
   return e;
+}
+
+Expression parse_python_statements(std::shared_ptr<const SourceFile> source,
+                                   std::size_t begin, std::size_t end,
+                                   const ExpressionScope& scope) {
+  return Expression::statements(std::move(source), begin, end, scope, true);
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> python_successors(
+    const SourceFile& source, std::size_t begin, std::size_t end) {
+  const std::string_view text = std::string_view(source.text()).substr(0, end);
+  std::vector<std::pair<std::size_t, std::size_t>> out;
+  for (const PythonLine& line : python_lines(text, begin, end)) {
+    std::size_t at = line.begin;
+    for (const std::string_view word : {"if", "elif", "else"}) {
+      if (starts_word(text, at, line.end, word)) {
+        const std::size_t colon = python_colon(text, at, line.end);
+        if (colon == std::string_view::npos) break;
+        at = colon + 1;
+        while (at < line.end && (text[at] == ' ' || text[at] == '\t')) ++at;
+        break;
+      }
+    }
+    if (starts_word(text, at, line.end, kProducedLocal)) {
+      out.emplace_back(at + kProducedLocal.size(), line.end);
+    }
+  }
+  return out;
+}
+
+Expression parse_statements(std::shared_ptr<const SourceFile> source,
+                            std::size_t begin, std::size_t end,
+                            const ExpressionScope& scope) {
+  return Expression::statements(std::move(source), begin, end, scope, false);
 }
 
 }  // namespace lsys

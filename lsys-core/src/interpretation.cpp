@@ -300,20 +300,23 @@ class Interpreter {
   // cpfg's coordinates are Y-up: lsolid's (x, y, z) is cpfg's (x, z, −y)
   // (docs/turtle.md), and cpfg keeps U = −(H × L) where lsolid keeps
   // H × L, so cpfg's up is lsolid's −up.
+  // PlantGL's turtle (L-Py) starts with left (0, −1, 0) and up (1, 0, 0)
+  // (its turtleparam.cpp): lsolid's frame turned a quarter about Z.
   glm::dvec3 answer(TurtleCommand command) const {
     const Turtle& t = state_.turtle;
-    const auto cpfg = [](const glm::dvec3& v) {
-      return glm::dvec3(v.x, v.z, -v.y);
+    const bool plantgl = settings_.query_frame == QueryFrame::PlantGL;
+    const auto frame = [&](const glm::dvec3& v) {
+      return plantgl ? glm::dvec3(-v.y, v.x, v.z) : glm::dvec3(v.x, v.z, -v.y);
     };
     switch (command) {
       case TurtleCommand::QueryHeading:
-        return cpfg(t.heading());
+        return frame(t.heading());
       case TurtleCommand::QueryLeft:
-        return cpfg(t.left());
+        return frame(t.left());
       case TurtleCommand::QueryUp:
-        return -cpfg(t.up());
+        return plantgl ? frame(t.up()) : -frame(t.up());
       default:
-        return cpfg(t.position());
+        return frame(t.position());
     }
   }
 

@@ -112,19 +112,75 @@ TEST(Lpy, RefusesPythonItWouldHaveToRunAtItsLine) {
       ": this is Python code, and lsolid does not run Python; it reads the "
       "declarative part of L-Py (docs/dialects/lpy.md)";
   EXPECT_EQ(located_error_of([] {
-              (void)lpy(
-                  "Axiom: A(1)\nproduction:\nA(x) :\n"
-                  "    if x < 2: produce F\nendlsystem\n");
+              (void)lpy("import numpy\nAxiom: F\nproduction:\nendlsystem\n");
             }),
-            "3:6: a rule whose body is Python" + tail);
-  EXPECT_EQ(located_error_of([] {
-              (void)lpy("import random\nAxiom: F\nproduction:\nendlsystem\n");
-            }),
-            "1:1: 'import random'" + tail);
+            "1:1: 'import numpy'" + tail);
   EXPECT_EQ(located_error_of([] {
               (void)lpy("def Start():\n  pass\nAxiom: F\nproduction:\n");
             }),
             "1:1: 'def Start():'" + tail);
+}
+
+// An L-Py rule whose body is Python: each `produce` is a production whose
+// statements are the body and whose condition is that this produce ran.
+TEST(Lpy, RunsRuleBodiesOfAssignmentsConditionsAndProduce) {
+  const auto derived = [](std::string_view rules, int n) {
+    const Grammar g =
+        lpy("Axiom: A(0)\nderivation length: " + std::to_string(n) +
+            "\nproduction:\n" + std::string(rules) + "endlsystem\n");
+    return to_string(derive(g), g.alphabet);
+  };
+  EXPECT_EQ(derived("A(x) :\n  if x < 2:\n    produce F A(x+1)\n"
+                    "  else:\n    produce B(x)\n",
+                    4),
+            "FFB(2)");
+  // One-line bodies, elif, locals, augmented assignment, and Python's
+  // operators; the successor reads the locals.
+  EXPECT_EQ(
+      derived("A(x) :\n  y = x * 2\n  y += 1\n"
+              "  if y % 2 == 0: produce X\n"
+              "  elif not (y > 3 and x != 0): produce B(y, 7 // 2, -7 % 3)"
+              "\n  else: produce C\n",
+              1),
+      "B(1,3,2)");
+  // What follows a produce does not run; a body that produces nothing
+  // leaves the module to the next rule.
+  EXPECT_EQ(derived("A(x) :\n  if x == 0:\n    produce B\n  produce C\n", 1),
+            "B");
+  EXPECT_EQ(derived("A(x) :\n  if x == 1:\n    produce B\n"
+                    "A(x) --> D(x if x > 0 else 5)\n",
+                    1),
+            "D(5)");
+  EXPECT_EQ(derived("A(x) :\n  pass\n", 2), "A(0)");
+}
+
+// PlantGL's turtle starts heading +Z with left (0, −1, 0) and up
+// (1, 0, 0): queries answer in its coordinates.
+TEST(Lpy, AnswersQueriesInPlantGLsCoordinates) {
+  const Grammar g =
+      lpy("Axiom: F+(90)F?P(0,0,0)?H(0,0,0)?L(0,0,0)?U(0,0,0)\n"
+          "derivation length: 1\nproduction:\nendlsystem\n");
+  EXPECT_EQ(to_string(derive(g), g.alphabet),
+            "F+(90)F ?P(0,-1,1) ?H(0,-1,0) ?L(0,0,-1) ?U(1,0,0)");
+}
+
+TEST(Lpy, RefusesPythonARuleBodyCannotRunAtItsPlace) {
+  const auto error = [](std::string_view body) {
+    return located_error_of([&] {
+      (void)lpy("Axiom: A\nproduction:\nA :\n" + std::string(body) +
+                "endlsystem\n");
+    });
+  };
+  const std::string tail =
+      " is not supported in a rule body: lsolid runs assignments, "
+      "if/elif/else, pass and produce (docs/dialects/lpy.md)";
+  EXPECT_EQ(error("  for i in range(3):\n    nproduce F\n  produce\n"),
+            "4:3: Python's 'for'" + tail);
+  // Refused even where no produce follows.
+  EXPECT_EQ(error("  nproduce F\n"), "4:3: Python's 'nproduce'" + tail);
+  EXPECT_EQ(error("  if 1:\n  produce F\n"),
+            "4:8: expected an indented block after ':'");
+  EXPECT_EQ(error("  x = 1\n    produce F\n"), "5:5: unexpected indentation");
 }
 
 TEST(Lpy, DrawsSpheresByTheirRadius) {

@@ -9,6 +9,8 @@
 #include <set>
 #include <span>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "lsys/source.hpp"
@@ -48,6 +50,10 @@ struct ExpressionScope {
   /// `or`, `not` and `mod` beside `&&`, `||`, `!` and `%`, and statements
   /// whose last `;` may be left out (`{v = i}`).
   bool mathjs = false;
+  /// Python's expressions, as L-Py writes them: `and`, `or`, `not`,
+  /// `x if c else y`, `%` (floored) and `//`, `random()` and
+  /// `uniform(a, b)`; statements are Python's (parse_python_statements).
+  bool python = false;
 };
 
 /// What cpfg's expressions share while deriving: its global variables and
@@ -73,6 +79,12 @@ class Expression {
   Expression() = default;
   /// A constant.
   [[nodiscard]] static Expression constant(double value);
+  /// 1 when slot `slot` holds `value`, else 0: which `produce` of an L-Py
+  /// rule body ran (parse_python_statements), placed at `offset` of
+  /// `source`.
+  [[nodiscard]] static Expression slot_equals(
+      std::shared_ptr<const SourceFile> source, std::size_t offset,
+      std::uint32_t slot, double value);
 
   /// True when the value does not depend on parameters.
   [[nodiscard]] bool is_constant() const noexcept {
@@ -166,9 +178,16 @@ class Expression {
   friend Expression parse_expression(std::shared_ptr<const SourceFile>,
                                      std::size_t, std::size_t,
                                      const ExpressionScope&);
+  // cpfg's statements, or an L-Py rule's Python body.
+  static Expression statements(std::shared_ptr<const SourceFile> source,
+                               std::size_t begin, std::size_t end,
+                               const ExpressionScope& scope, bool python);
   friend Expression parse_statements(std::shared_ptr<const SourceFile>,
                                      std::size_t, std::size_t,
                                      const ExpressionScope&);
+  friend Expression parse_python_statements(std::shared_ptr<const SourceFile>,
+                                            std::size_t, std::size_t,
+                                            const ExpressionScope&);
   double run(const double* read, double* write, Variables* variables) const;
   // Takes compiled code and notes what it needs while running.
   void adopt(std::vector<Instruction> code, const ExpressionScope& scope);
@@ -199,4 +218,25 @@ class Expression {
     std::shared_ptr<const SourceFile> source, std::size_t begin,
     std::size_t end, const ExpressionScope& scope);
 
+/// The local variable in which parse_python_statements records which
+/// `produce` ran: 0 for none, k for the k-th in the text.
+inline constexpr std::string_view kProducedLocal = "produce";
+/// Compiles the Python body of an L-Py rule in bytes [begin, end), lines
+/// whose indentation makes the blocks: `name = e` (and `+=`, `-=`, `*=`,
+/// `/=`), `if c:` / `elif c:` / `else:` (a simple statement may follow the
+/// colon on its line), `pass`, and `produce …`, which sets the local
+/// kProducedLocal to its number and ends the body. `#` starts a comment.
+/// Expressions are Python's (ExpressionScope::python).
+/// @pre `scope.locals` is set.
+/// @throws ParseError as parse_expression, for bad indentation, and at any
+///   other Python statement (`for`, `nproduce`, `return`, …), which lsolid
+///   does not run.
+[[nodiscard]] Expression parse_python_statements(
+    std::shared_ptr<const SourceFile> source, std::size_t begin,
+    std::size_t end, const ExpressionScope& scope);
+/// The `produce` statements of an L-Py rule body in bytes [begin, end), in
+/// the order parse_python_statements numbers them: for each, the bytes of
+/// its successor.
+[[nodiscard]] std::vector<std::pair<std::size_t, std::size_t>>
+python_successors(const SourceFile& source, std::size_t begin, std::size_t end);
 }  // namespace lsys

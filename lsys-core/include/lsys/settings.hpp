@@ -17,6 +17,11 @@ namespace lsys {
 /// rolls left toward up. Cpfg: the opposite, as cpfg computes it.
 enum class RollConvention { Lpfg, Cpfg };
 
+/// The coordinates in which the turtle answers queries (`?P`, `?H`, …):
+/// cpfg's (Y up; its up is lsolid's −up) or PlantGL's, L-Py's turtle (Z
+/// up, starting with left (0, −1, 0) where lsolid's is (−1, 0, 0)).
+enum class QueryFrame { Cpfg, PlantGL };
+
 /// A setting that lsys-core does not interpret but accepts on behalf of a
 /// client (the print settings of lsys-solid), with where its value stands.
 struct ExtraSetting {
@@ -72,6 +77,7 @@ struct Settings {
   bool twist_cylinders = false;
   std::uint64_t seed = 0;
   RollConvention roll = RollConvention::Lpfg;
+  QueryFrame query_frame = QueryFrame::Cpfg;
   int maximum_depth = 1;         ///< of homomorphism and decomposition, as cpfg
   std::vector<SymbolId> ignore;  ///< skipped when matching context
   std::vector<SymbolId> consider;  ///< if not empty, only these are seen

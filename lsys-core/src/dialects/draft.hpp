@@ -63,6 +63,12 @@ struct ProductionText {
   std::optional<Range> probability;  ///< ABOP's -(p)→
   std::vector<Range> rhs;            ///< continuation lines append
   Section section = Section::Productions;
+  /// L-Py's rule body in Python, when the rule has one: each of its
+  /// `produce` statements is a production of its own, with the body as its
+  /// statements and `produce == python_branch` as its condition
+  /// (parse_python_statements); rhs is that produce's successor.
+  std::optional<Range> python_body;
+  int python_branch = 0;
 };
 
 /// A name of a `module` line, and the parameter count its list gives.
@@ -132,6 +138,8 @@ struct Syntax {
   /// cpfg's `=` in a right context skips to the end of the current branch
   /// (`A > [B=]C`, `A > F=]g`); without it `=` is a module.
   bool skip_to_branch_end = false;
+  /// Python's expressions (ExpressionScope::python), as L-Py writes them.
+  bool python = false;
   /// Only `p1:`, `P12:` are labels (L-system Explorer): `P : * → …` is the
   /// module P with the condition "always".
   bool numbered_labels = false;

@@ -677,13 +677,15 @@ class GrammarBuilder : TextScan {
       p.right_context = pattern(lhs.right, slots, true, "");
     }
     std::vector<std::string> locals;
-    const ExpressionScope scope =
+    ExpressionScope scope =
         cpfg_scope(ExpressionScope{.parameters = slots,
                                    .constants = &grammar_.constants,
                                    .used_constants = &used_constants_,
                                    .radians = draft_.syntax.radians,
-                                   .mathjs = draft_.syntax.mathjs},
+                                   .mathjs = draft_.syntax.mathjs,
+                                   .python = draft_.syntax.python},
                    &locals);
+    if (text.python_body) scope.locals = &locals;
     if (lhs.before) {
       p.before =
           parse_statements(source_, lhs.before->begin, lhs.before->end, scope);
@@ -695,6 +697,18 @@ class GrammarBuilder : TextScan {
     if (lhs.after) {
       p.after =
           parse_statements(source_, lhs.after->begin, lhs.after->end, scope);
+    }
+    if (text.python_body) {
+      p.before = parse_python_statements(source_, text.python_body->begin,
+                                         text.python_body->end, scope);
+      const auto produced =
+          std::find(locals.begin(), locals.end(), kProducedLocal);
+      p.condition = Expression::slot_equals(
+          source_, text.python_body->begin,
+          static_cast<std::uint32_t>(
+              slots.size() +
+              static_cast<std::size_t>(produced - locals.begin())),
+          text.python_branch);
     }
     std::vector<Range> rhs = text.rhs;
     if (text.probability) {

@@ -64,6 +64,12 @@ const std::vector<SymbolCommand> kSymbols = {
     {"@Gc", TurtleCommand::None, std::nullopt},
     {"@Ge", TurtleCommand::None, std::nullopt},
     {"Frame", TurtleCommand::None, std::nullopt},
+    // Queries: the turtle's position and frame, written into the module
+    // before each step, in PlantGL's coordinates.
+    {"?P", TurtleCommand::QueryPosition, std::nullopt},
+    {"?H", TurtleCommand::QueryHeading, std::nullopt},
+    {"?L", TurtleCommand::QueryLeft, std::nullopt},
+    {"?U", TurtleCommand::QueryUp, std::nullopt},
 };
 
 // L-Py modules lsolid knows by name but cannot build: refused where they
@@ -92,6 +98,7 @@ const std::vector<RefusedName> kRefused = {
     {"SetGuide", "a guide curve"},
     {"SetContour", "a contour"},
     {"Label", "a label"},
+    {"?", "a query other than ?P, ?H, ?L, ?U"},
 };
 
 // Blanks `#` comments to the end of the line (outside strings), keeping
@@ -138,6 +145,7 @@ class LpyReader : TextScan {
     std::size_t end = source_->text().find(kInitialisation);
     if (end == std::string::npos) end = text_.size();
     for (const Range& line : lines(Range{0, end})) read_line(line);
+    finish_body();
     // Of the editor's block, the turtle's settings count: L-Py applies them
     // before the L-system runs.
     // (materials and other calls there are the editor's, not the model's).
@@ -160,9 +168,11 @@ class LpyReader : TextScan {
     s.initial_color = 1;
     s.tropism = glm::dvec3(0.0, 0.0, 1.0);
     s.roll = RollConvention::Lpfg;
+    s.query_frame = QueryFrame::PlantGL;
     draft_.symbols = kSymbols;
     draft_.refused = kRefused;
     draft_.syntax.radians = true;
+    draft_.syntax.python = true;
     draft_.warnings = std::move(grammar_warnings_);
     draft_.constants = {
         {"True", 1.0}, {"False", 0.0}, {"pi", 3.14159265358979323846}};
@@ -196,6 +206,13 @@ class LpyReader : TextScan {
     const Range line = trim(raw);
     if (line.empty()) return;
     const bool indented = line.begin > raw.begin;
+    if (body_) {
+      if (indented) {
+        body_->end = line.end;
+        return;
+      }
+      finish_body();
+    }
     Range rest;
     if (starts_line(line, "endlsystem")) {
       mode_ = Mode::Python;
@@ -297,7 +314,10 @@ class LpyReader : TextScan {
     const std::size_t colon = find_top(line, ":");
     if (colon != std::string::npos &&
         (arrow == std::string::npos || colon < arrow)) {
-      refuse_python(colon, "a rule whose body is Python");
+      // `pred :` and a Python body, on the rest of the line or below it.
+      head_ = Range{line.begin, colon};
+      body_ = Range{colon + 1, line.end};
+      return;
     }
     if (arrow == std::string::npos) {
       fail(line.begin, "expected a rule 'predecessor --> successor'");
@@ -312,10 +332,41 @@ class LpyReader : TextScan {
                                                 section_});
   }
 
+  // A rule with a Python body becomes one production per `produce`
+  // (ProductionText::python_body); a body without one never rewrites.
+  void finish_body() {
+    if (!body_) return;
+    const Range body = *body_;
+    body_.reset();
+    int branch = 0;
+    for (const auto& [begin, end] :
+         python_successors(*source_, body.begin, body.end)) {
+      ProductionText p{head_, std::nullopt, {Range{begin, end}}, section_};
+      p.python_body = body;
+      p.python_branch = ++branch;
+      draft_.productions.push_back(std::move(p));
+    }
+    if (branch == 0) {
+      // Still compiled, so that what lsolid cannot run is refused; its
+      // condition never holds.
+      ProductionText p{
+          head_, std::nullopt, {Range{body.end, body.end}}, section_};
+      p.python_body = body;
+      p.python_branch = -1;
+      draft_.productions.push_back(std::move(p));
+    }
+  }
+
   void read_python(Range line, bool indented) {
     if (indented) refuse_python(line.begin, "an indented Python block");
     const std::string_view text = view(line);
-    if (text.starts_with("from math import") || text == "import math") return;
+    // Python's math and random functions are the expressions' own
+    // (random numbers from lsolid's generator, not Python's).
+    if (text == "import math" || text == "import random" ||
+        text.starts_with("from math import ") ||
+        text.starts_with("from random import ")) {
+      return;
+    }
     if (text.starts_with("context().turtle.") ||
         text.starts_with("execContext().turtle.")) {
       turtle_setting(line);
@@ -370,6 +421,9 @@ class LpyReader : TextScan {
   Draft draft_;
   Mode mode_ = Mode::Python;
   Section section_ = Section::Productions;
+  // The rule whose Python body is being read: its head and body so far.
+  Range head_;
+  std::optional<Range> body_;
   std::vector<std::string> grammar_warnings_;
 };
 

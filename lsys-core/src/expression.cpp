@@ -652,8 +652,25 @@ class Compiler {
     }
     pos_ = end;
     const std::string name(text_.substr(at, end - at));
+    if (scope_.python && pos_ + 1 < text_.size() && text_[pos_] == '.' &&
+        (name == "math" || name == "random" ||
+         (scope_.python_modules != nullptr &&
+          std::find(scope_.python_modules->begin(),
+                    scope_.python_modules->end(),
+                    name) != scope_.python_modules->end()))) {
+      ++pos_;  // math.sqrt(x) is sqrt(x)
+      return parse_name();
+    }
     skip_space();
     if (pos_ < text_.size() && text_[pos_] == '(') return parse_call(name, at);
+    if (!frames_.empty()) {
+      // Inside a Python function: its parameters, then what is global; not
+      // the calling rule's parameters and locals.
+      for (const auto& [parameter, node] : frames_.back()) {
+        if (parameter == name) return node;
+      }
+      return parse_global_name(name, at);
+    }
     for (std::size_t i = 0; i < scope_.parameters.size(); ++i) {
       if (scope_.parameters[i] == name) {
         const int node = add(Op::Parameter, at);
@@ -666,6 +683,11 @@ class Compiler {
       nodes_.back().instruction.slot = *slot;
       return node;
     }
+    return parse_global_name(name, at);
+  }
+
+  // A global variable or a constant.
+  int parse_global_name(const std::string& name, std::size_t at) {
     if (const auto slot = global_slot(name)) {
       const int node = add(Op::Global, at);
       nodes_.back().instruction.slot = *slot;
@@ -715,7 +737,8 @@ class Compiler {
   // mathjs's random(), random(max), random(min, max): uniform numbers from
   // the generator of cpfg's ran, so that a file gives the same model on
   // every run (mathjs's own are never the same twice).
-  int parse_random(std::size_t at) {
+  // A call's arguments, from its `(` to its `)`.
+  std::vector<int> parse_arguments() {
     accept("(");
     std::vector<int> args;
     if (!accept(")")) {
@@ -725,6 +748,11 @@ class Compiler {
         if (!accept(",")) fail(pos_, "expected ',' or ')'");
       }
     }
+    return args;
+  }
+
+  int parse_random(std::size_t at) {
+    std::vector<int> args = parse_arguments();
     if (args.size() > 2) {
       fail(at, "'random' takes at most 2 arguments, " +
                    std::to_string(args.size()) + " given");
@@ -744,6 +772,12 @@ class Compiler {
         (scope_.python && (name == "random" || name == "uniform"))) {
       return parse_random(at);
     }
+    if (scope_.python_functions != nullptr) {
+      if (const auto it = scope_.python_functions->find(name);
+          it != scope_.python_functions->end()) {
+        return inline_python_function(name, it->second, at);
+      }
+    }
     const Function* function = nullptr;
     for (const Function& f : kFunctions) {
       if (f.name == name) function = &f;
@@ -753,16 +787,7 @@ class Compiler {
          !(scope_.python && name == "pow"))) {
       fail(at, "'" + name + "' is not a function");
     }
-    accept("(");
-    std::vector<int> args;
-    skip_space();
-    if (!accept(")")) {
-      for (;;) {
-        args.push_back(parse_conditional());
-        if (accept(")")) break;
-        if (!accept(",")) fail(pos_, "expected ',' or ')'");
-      }
-    }
+    std::vector<int> args = parse_arguments();
     if (static_cast<int>(args.size()) != function->arity) {
       fail(at, "'" + name + "' takes " + std::to_string(function->arity) +
                    (function->arity == 1 ? " argument, " : " arguments, ") +
@@ -770,6 +795,37 @@ class Compiler {
     }
     if (scope_.radians) return call_in_radians(function->op, at, args);
     return fold(add(function->op, at, args[0], args.size() > 1 ? args[1] : -1));
+  }
+
+  // A call of an L-Py function of one `return`: its expression compiled
+  // here, each parameter standing for its argument's tree.
+  int inline_python_function(const std::string& name, const PythonFunction& f,
+                             std::size_t at) {
+    std::vector<int> args = parse_arguments();
+    if (args.size() != f.parameters.size()) {
+      fail(at, "'" + name + "' takes " + std::to_string(f.parameters.size()) +
+                   " arguments, " + std::to_string(args.size()) + " given");
+    }
+    std::vector<std::pair<std::string, int>> frame;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+      frame.emplace_back(f.parameters[i], args[i]);
+    }
+    const Nesting guard(*this);
+    const std::string_view saved_text = text_;
+    const std::size_t saved_pos = pos_;
+    frames_.push_back(std::move(frame));
+    text_ = std::string_view(source_.text()).substr(0, f.end);
+    pos_ = f.begin;
+    const int node = parse_conditional();
+    skip_space();
+    if (pos_ < text_.size()) {
+      fail(pos_,
+           "unexpected '" + std::string(peek_code_point()) + "' in expression");
+    }
+    frames_.pop_back();
+    text_ = saved_text;
+    pos_ = saved_pos;
+    return node;
   }
 
   // The code runs in degrees; radians are converted on the way in (sin,
@@ -866,9 +922,13 @@ class Compiler {
     lines_ = python_lines(whole, pos_, whole.size());
     std::vector<Instruction> code;
     const std::size_t at = pos_;
-    code.push_back(Instruction{.op = Op::Constant, .offset = at});
-    produced_store_ = store_for(std::string(kProducedLocal), at);
-    code.push_back(produced_store_);
+    // A rule's body has locals; L-Py's hooks (`def Start():`) have none
+    // and produce nothing.
+    if (scope_.locals != nullptr) {
+      code.push_back(Instruction{.op = Op::Constant, .offset = at});
+      produced_store_ = store_for(std::string(kProducedLocal), at);
+      code.push_back(produced_store_);
+    }
     depth_ = 1;
     std::size_t li = 0;
     if (!lines_.empty()) python_block(code, li, lines_.front().indent, whole);
@@ -989,6 +1049,13 @@ class Compiler {
     bool produced = false;
     if (word == "pass") {
       pos_ += word.size();
+    } else if (word == "global") {
+      // Names are global once a hook assigned them (ExpressionScope).
+      pos_ = text_.size();
+    } else if (word == "print") {
+      skip_call();
+    } else if (word == kProducedLocal && scope_.locals == nullptr) {
+      fail(at, "'produce' outside a rule");
     } else if (word == kProducedLocal) {
       code.push_back(Instruction{.op = Op::Constant,
                                  .value = static_cast<double>(++produces_),
@@ -1040,8 +1107,9 @@ class Compiler {
   [[noreturn]] void refuse_python(std::size_t at, const std::string& word) {
     fail(at, (word.empty() ? std::string("this Python statement")
                            : "Python's '" + word + "'") +
-                 " is not supported in a rule body: lsolid runs assignments, "
-                 "if/elif/else, pass and produce (docs/dialects/lpy.md)");
+                 " is not supported: lsolid runs assignments, "
+                 "if/elif/else, pass, global, print and produce "
+                 "(docs/dialects/lpy.md)");
   }
 
   // The instruction that reads (Parameter, Global) or writes (StoreSlot,
@@ -1227,8 +1295,8 @@ class Compiler {
     int depth = 1;
     while (pos_ < text_.size() && depth > 0) {
       const char c = text_[pos_++];
-      if (c == '"') {
-        while (pos_ < text_.size() && text_[pos_] != '"') {
+      if (c == '"' || (scope_.python && c == '\'')) {
+        while (pos_ < text_.size() && text_[pos_] != c) {
           if (text_[pos_] == '\\') ++pos_;
           ++pos_;
         }
@@ -1272,6 +1340,8 @@ class Compiler {
   int nesting_ = 0;
   int depth_ = 0;
   std::vector<PythonLine> lines_;
+  // The arguments of the Python functions being compiled in place.
+  std::vector<std::vector<std::pair<std::string, int>>> frames_;
   Instruction produced_store_;
   int produces_ = 0;
 };

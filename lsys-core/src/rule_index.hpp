@@ -62,8 +62,17 @@ class RuleIndex {
 [[nodiscard]] inline bool statements_and_condition_hold(
     const Production& rule, std::vector<double>& slots, Variables* variables) {
   slots.resize(slots.size() + static_cast<std::size_t>(rule.local_count), 0.0);
-  if (rule.before) rule.before->execute(slots, variables);
-  if (!condition_holds(rule, slots, variables)) return false;
+  if (rule.undo_unless_applied && variables != nullptr) {
+    Variables before = *variables;
+    if (rule.before) rule.before->execute(slots, variables);
+    if (!condition_holds(rule, slots, variables)) {
+      *variables = std::move(before);
+      return false;
+    }
+  } else {
+    if (rule.before) rule.before->execute(slots, variables);
+    if (!condition_holds(rule, slots, variables)) return false;
+  }
   if (rule.after) rule.after->execute(slots, variables);
   return true;
 }

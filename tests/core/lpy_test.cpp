@@ -4,6 +4,7 @@
 // The L-Py front end (docs/dialects/lpy.md).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 
@@ -116,9 +117,11 @@ TEST(Lpy, RefusesPythonItWouldHaveToRunAtItsLine) {
             }),
             "1:1: 'import numpy'" + tail);
   EXPECT_EQ(located_error_of([] {
-              (void)lpy("def Start():\n  pass\nAxiom: F\nproduction:\n");
+              (void)lpy(
+                  "def EndEach(lstring):\n  pass\nAxiom: F\n"
+                  "production:\n");
             }),
-            "1:1: 'def Start():'" + tail);
+            "1:1: 'def EndEach(lstring):'" + tail);
 }
 
 // An L-Py rule whose body is Python: each `produce` is a production whose
@@ -154,6 +157,20 @@ TEST(Lpy, RunsRuleBodiesOfAssignmentsConditionsAndProduce) {
   EXPECT_EQ(derived("A(x) :\n  pass\n", 2), "A(0)");
 }
 
+// L-Py's hooks run as cpfg's Start: and its kin; what they assign is
+// global, and rule bodies read and change it.
+TEST(Lpy, RunsTheHooksStartAndStartEachWithGlobalVariables) {
+  const Grammar g =
+      lpy("def Start():\n  global m\n  print('Start')\n  m = 10\n"
+          "def StartEach():\n  global m\n  m += 1\n"
+          "Axiom: A\nderivation length: 3\nproduction:\n"
+          "A :\n  global m\n  produce B(m) A\nendlsystem\n");
+  EXPECT_EQ(to_string(derive(g), g.alphabet), "B(11)B(12)B(13)A");
+  EXPECT_EQ(located_error_of(
+                [] { (void)lpy("def Start():\n  produce A\nAxiom: A\n"); }),
+            "2:3: 'produce' outside a rule");
+}
+
 // PlantGL's turtle starts heading +Z with left (0, −1, 0) and up
 // (1, 0, 0): queries answer in its coordinates.
 TEST(Lpy, AnswersQueriesInPlantGLsCoordinates) {
@@ -164,6 +181,46 @@ TEST(Lpy, AnswersQueriesInPlantGLsCoordinates) {
             "F+(90)F ?P(0,-1,1) ?H(0,-1,0) ?L(0,0,-1) ?U(1,0,0)");
 }
 
+// A function of one `return` is compiled where it is called, with its
+// parameters bound to the arguments; it sees constants, not the rule's
+// names. Modules imported under another name are read through it.
+TEST(Lpy, CompilesFunctionsOfOneReturnWhereTheyAreCalled) {
+  const Grammar g = lpy(
+      "import math as m\nk = 3\ndef alpha(x):\n  return 30 - k*x  # deg\n"
+      "def twice(a, b): return alpha(a) * 2 + b\n"
+      "Axiom: A(2)\nderivation length: 1\nproduction:\n"
+      "A(x) :\n  y = 100\n  produce B(alpha(x), twice(1, x), m.floor(2.5))\n"
+      "endlsystem\n");
+  EXPECT_EQ(to_string(derive(g), g.alphabet), "B(24,56,2)");
+  EXPECT_EQ(located_error_of([] {
+              (void)lpy("def f(x):\n  y = x\n  return y\nAxiom: A\n");
+            }),
+            "1:1: 'def f(x):': this is Python code, and lsolid does not run "
+            "Python; it reads the declarative part of L-Py "
+            "(docs/dialects/lpy.md)");
+  EXPECT_EQ(located_error_of([] {
+              (void)derive(
+                  lpy("def f(x): return y\nAxiom: A(1)\n"
+                      "production:\nA(y) --> B(f(y))\n"));
+            }),
+            "1:18: undefined name 'y'");
+}
+
+// The body runs once per module, as in L-Py: a production that a run did
+// not select undoes that run's draws, so the next production draws the same
+// numbers and every module is rewritten by exactly one of them.
+TEST(Lpy, RunsARandomBodyOncePerModule) {
+  const Grammar g = lpy("Axiom: " + std::string(64, 'A') +
+                        "\nderivation length: 1\nproduction:\n"
+                        "A :\n  if random() < 0.5: produce B\n"
+                        "  else: produce C\nendlsystem\n");
+  const std::string s = to_string(derive(g), g.alphabet);
+  EXPECT_EQ(s.size(), 64U);
+  EXPECT_EQ(std::count(s.begin(), s.end(), 'A'), 0);
+  EXPECT_GT(std::count(s.begin(), s.end(), 'B'), 16);
+  EXPECT_GT(std::count(s.begin(), s.end(), 'C'), 16);
+}
+
 TEST(Lpy, RefusesPythonARuleBodyCannotRunAtItsPlace) {
   const auto error = [](std::string_view body) {
     return located_error_of([&] {
@@ -172,8 +229,8 @@ TEST(Lpy, RefusesPythonARuleBodyCannotRunAtItsPlace) {
     });
   };
   const std::string tail =
-      " is not supported in a rule body: lsolid runs assignments, "
-      "if/elif/else, pass and produce (docs/dialects/lpy.md)";
+      " is not supported: lsolid runs assignments, if/elif/else, pass, "
+      "global, print and produce (docs/dialects/lpy.md)";
   EXPECT_EQ(error("  for i in range(3):\n    nproduce F\n  produce\n"),
             "4:3: Python's 'for'" + tail);
   // Refused even where no produce follows.

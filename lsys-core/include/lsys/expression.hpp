@@ -21,6 +21,15 @@ namespace lsys {
 /// equally spaced x from 0 to 1 (vlab's `.func` files).
 using FunctionTable = std::vector<std::vector<double>>;
 
+/// A Python function of one `return` (L-Py's `def alpha(x): return 30 -
+/// 10*x`): its parameters and the bytes of the returned expression, which
+/// a call compiles in place with the arguments bound to the parameters.
+struct PythonFunction {
+  std::vector<std::string> parameters;
+  std::size_t begin = 0;
+  std::size_t end = 0;
+};
+
 /// The names an expression may use: the formal parameters of the production
 /// it belongs to (ABOP §1.10), in slot order, and named constants
 /// (`#define`, `--define`), which are folded at compile time.
@@ -54,6 +63,11 @@ struct ExpressionScope {
   /// `x if c else y`, `%` (floored) and `//`, `random()` and
   /// `uniform(a, b)`; statements are Python's (parse_python_statements).
   bool python = false;
+  /// Names that stand for Python's modules `math` and `random` (`import
+  /// random as rd`): `rd.uniform(0, 1)` is `uniform(0, 1)`.
+  const std::vector<std::string>* python_modules = nullptr;
+  /// L-Py's functions of one `return`, which calls compile in place.
+  const std::map<std::string, PythonFunction>* python_functions = nullptr;
 };
 
 /// What cpfg's expressions share while deriving: its global variables and

@@ -121,6 +121,11 @@ struct Production {
   /// How many local variables the statements use, in the slots after the
   /// formal parameters.
   int local_count = 0;
+  /// An L-Py rule body makes one production per `produce`, each running
+  /// the whole body: a run that does not select this production is undone
+  /// (random draws, globals), so that the body runs once per module, as
+  /// in L-Py, and the next production's run draws the same numbers.
+  bool undo_unless_applied = false;
   Successor successor;
   std::size_t offset = 0;  ///< byte offset of the production
 

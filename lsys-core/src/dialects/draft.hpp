@@ -152,6 +152,7 @@ enum class BlockKind { Start, StartEach, EndEach, End };
 struct StatementBlock {
   BlockKind kind;
   Range text;
+  bool python = false;  ///< L-Py's `def Start():` and its kin
 };
 
 /// What a front end hands the grammar builder: the pieces of a file sorted
@@ -180,6 +181,10 @@ struct Draft {
   /// variables): global variables that start at their value, not
   /// constants.
   std::unordered_set<std::string> variables;
+  /// L-Py: the names `import math as m` and `import random as rd` bind.
+  std::vector<std::string> python_modules;
+  /// L-Py's functions of one `return`, by name.
+  std::map<std::string, PythonFunction> python_functions;
   /// cpfg's blocks of statements, in file order.
   std::vector<StatementBlock> blocks;
   /// cpfg's functions for `func(id, x)`, from the view file.

@@ -682,10 +682,8 @@ class GrammarBuilder : TextScan {
                                    .constants = &grammar_.constants,
                                    .used_constants = &used_constants_,
                                    .radians = draft_.syntax.radians,
-                                   .mathjs = draft_.syntax.mathjs,
-                                   .python = draft_.syntax.python},
+                                   .mathjs = draft_.syntax.mathjs},
                    &locals);
-    if (text.python_body) scope.locals = &locals;
     if (lhs.before) {
       p.before =
           parse_statements(source_, lhs.before->begin, lhs.before->end, scope);
@@ -699,6 +697,7 @@ class GrammarBuilder : TextScan {
           parse_statements(source_, lhs.after->begin, lhs.after->end, scope);
     }
     if (text.python_body) {
+      p.undo_unless_applied = true;
       p.before = parse_python_statements(source_, text.python_body->begin,
                                          text.python_body->end, scope);
       const auto produced =
@@ -765,6 +764,15 @@ class GrammarBuilder : TextScan {
   // cpfg's names and functions added to a scope.
   ExpressionScope cpfg_scope(ExpressionScope scope,
                              std::vector<std::string>* locals) {
+    if (draft_.syntax.python) {
+      // L-Py: a rule body's names are local unless a hook made them global.
+      scope.python = true;
+      scope.python_modules = &draft_.python_modules;
+      scope.python_functions = &draft_.python_functions;
+      scope.locals = locals;
+      scope.globals = &grammar_.globals;
+      return scope;
+    }
     if (!draft_.syntax.cpfg_statements) return scope;
     scope.locals = locals;
     scope.globals = &grammar_.globals;
@@ -800,8 +808,10 @@ class GrammarBuilder : TextScan {
       if (slot->has_value()) {
         fail(block.text.begin, "a second block of this kind");
       }
-      *slot =
-          parse_statements(source_, block.text.begin, block.text.end, scope);
+      *slot = block.python ? parse_python_statements(source_, block.text.begin,
+                                                     block.text.end, scope)
+                           : parse_statements(source_, block.text.begin,
+                                              block.text.end, scope);
     }
   }
 

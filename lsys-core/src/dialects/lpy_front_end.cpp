@@ -61,6 +61,7 @@ const std::vector<SymbolCommand> kSymbols = {
     {"@Tp", TurtleCommand::SetTropism, std::nullopt},
     // A generalized cylinder joins its segments into one smooth tube,
     // which lsolid's joined tubes already are; a frame is a drawing aid.
+    {"@Gs", TurtleCommand::None, std::nullopt},
     {"@Gc", TurtleCommand::None, std::nullopt},
     {"@Ge", TurtleCommand::None, std::nullopt},
     {"Frame", TurtleCommand::None, std::nullopt},
@@ -338,6 +339,26 @@ class LpyReader : TextScan {
     if (!body_) return;
     const Range body = *body_;
     body_.reset();
+    if (hook_) {
+      draft_.blocks.push_back(StatementBlock{*hook_, body, true});
+      hook_.reset();
+      return;
+    }
+    if (function_) {
+      // Only a function of one `return` line is kept (compiled where it is
+      // called); any other body is Python lsolid does not run.
+      const Range code = trim(body);
+      const std::string_view text = view(code);
+      if (!text.starts_with("return ") ||
+          text.find('\n') != std::string_view::npos) {
+        refuse_python(function_->at, "'" + function_->line + "'");
+      }
+      function_->function.begin = code.begin + 7;
+      function_->function.end = code.end;
+      draft_.python_functions[function_->name] = function_->function;
+      function_.reset();
+      return;
+    }
     int branch = 0;
     for (const auto& [begin, end] :
          python_successors(*source_, body.begin, body.end)) {
@@ -362,10 +383,34 @@ class LpyReader : TextScan {
     const std::string_view text = view(line);
     // Python's math and random functions are the expressions' own
     // (random numbers from lsolid's generator, not Python's).
+    for (std::string_view module : {"import math as ", "import random as "}) {
+      if (text.starts_with(module) &&
+          is_identifier(text.substr(module.size()))) {
+        draft_.python_modules.emplace_back(text.substr(module.size()));
+        return;
+      }
+    }
+    // lsolid draws from its own generator: a seed changes nothing here.
+    if (text.starts_with("seed(") || text.starts_with("random.seed(")) return;
     if (text == "import math" || text == "import random" ||
         text.starts_with("from math import ") ||
-        text.starts_with("from random import ")) {
-      return;
+        text.starts_with("from random import ") ||
+        text.starts_with("from openalea.plantgl.all import ") ||
+        text.starts_with("from openalea.plantgl.math import ")) {
+      return;  // PlantGL's names stay unknown: refused where they are used
+    }
+    if (read_function(line)) return;
+    // L-Py's hooks, run as cpfg runs Start: and its kin.
+    for (const auto& [name, kind] :
+         {std::pair{"def Start():", BlockKind::Start},
+          std::pair{"def StartEach():", BlockKind::StartEach},
+          std::pair{"def EndEach():", BlockKind::EndEach},
+          std::pair{"def End():", BlockKind::End}}) {
+      if (text.starts_with(name)) {
+        hook_ = kind;
+        body_ = Range{line.begin + std::string_view(name).size(), line.end};
+        return;
+      }
     }
     if (text.starts_with("context().turtle.") ||
         text.starts_with("execContext().turtle.")) {
@@ -382,9 +427,58 @@ class LpyReader : TextScan {
     define(line);
   }
 
-  // `name = expression`, a constant the rules may read.
+  // `def name(a, b):` and a body, kept if it is one `return` line.
+  bool read_function(Range line) {
+    const std::string_view text = view(line);
+    if (!text.starts_with("def ")) return false;
+    const std::size_t open = text.find('(');
+    const std::size_t close = text.find(')');
+    if (open == std::string_view::npos || close == std::string_view::npos ||
+        close < open) {
+      return false;
+    }
+    const std::string name(
+        view(trim(Range{line.begin + 4, line.begin + open})));
+    if (!is_identifier(name) || name == "Start" || name == "End" ||
+        name == "StartEach" || name == "EndEach") {
+      return false;
+    }
+    std::size_t colon = close + 1;
+    while (colon < text.size() && (text[colon] == ' ' || text[colon] == '\t'))
+      ++colon;
+    if (colon >= text.size() || text[colon] != ':') return false;
+    PendingFunction f{name, std::string(text), line.begin, {}};
+    const Range list{line.begin + open + 1, line.begin + close};
+    if (!trim(list).empty()) {
+      for (const Range& p : split_top(list, ',')) {
+        const std::string parameter(view(trim(p)));
+        if (!is_identifier(parameter)) return false;  // defaults, *args
+        f.function.parameters.push_back(parameter);
+      }
+    }
+    function_ = std::move(f);
+    body_ = Range{line.begin + colon + 1, line.end};
+    return true;
+  }
+
+  // `name = expression`, a constant the rules may read; `a, b = 1, 2`
+  // defines both.
   void define(Range line) {
     const std::size_t equals = find_equals(line);
+    if (equals != std::string::npos) {
+      const auto names = split_top(Range{line.begin, equals}, ',');
+      const auto values = split_top(Range{equals + 1, line.end}, ',');
+      if (names.size() > 1 && names.size() == values.size()) {
+        for (std::size_t i = 0; i < names.size(); ++i) {
+          const Range name = trim(names[i]);
+          if (!is_identifier(view(name))) {
+            refuse_python(line.begin, "'" + std::string(view(line)) + "'");
+          }
+          draft_.defines.emplace_back(name, trim(values[i]));
+        }
+        return;
+      }
+    }
     const Range name =
         equals == std::string::npos ? line : trim(Range{line.begin, equals});
     if (equals == std::string::npos || !is_identifier(view(name))) {
@@ -424,6 +518,14 @@ class LpyReader : TextScan {
   // The rule whose Python body is being read: its head and body so far.
   Range head_;
   std::optional<Range> body_;
+  std::optional<BlockKind> hook_;  ///< when the body is a hook's
+  struct PendingFunction {
+    std::string name;
+    std::string line;  ///< the `def` line, for the refusal
+    std::size_t at;
+    PythonFunction function;
+  };
+  std::optional<PendingFunction> function_;  ///< when it is a function's
   std::vector<std::string> grammar_warnings_;
 };
 

@@ -457,12 +457,22 @@ class Compiler {
   }
 
   int parse_and() {
-    int left = parse_comparison();
+    int left = parse_not();
     for (;;) {
       const std::size_t at = (skip_space(), pos_);
       if (!accept("&&") && !accept_word("and")) return left;
-      left = binary(Op::And, at, left, parse_comparison());
+      left = binary(Op::And, at, left, parse_not());
     }
+  }
+
+  // Python's `not` binds more loosely than a comparison: `not a == b` is
+  // `not (a == b)`.
+  int parse_not() {
+    if (!scope_.python) return parse_comparison();
+    skip_space();
+    const std::size_t at = pos_;
+    if (accept_word("not")) return fold(add(Op::Not, at, parse_not()));
+    return parse_comparison();
   }
 
   int parse_comparison() {
@@ -479,18 +489,29 @@ class Compiler {
         {">", Op::Greater},
         {"=", Op::Equal},
     }};
+    // Python chains comparisons: `0 < x < 3` is `0 < x and x < 3`.
+    int chain = -1;
+    int previous = left;
     for (;;) {
       skip_space();
       const std::size_t at = pos_;
       bool matched = false;
       for (const auto& [token, op] : kOps) {
+        if (scope_.python && token == "=") continue;
         if (accept(token)) {
-          left = binary(op, at, left, parse_sum());
+          const int right = parse_sum();
+          if (scope_.python) {
+            const int test = binary(op, at, previous, right);
+            chain = chain < 0 ? test : binary(Op::And, at, chain, test);
+            previous = right;
+          } else {
+            left = binary(op, at, left, right);
+          }
           matched = true;
           break;
         }
       }
-      if (!matched) return left;
+      if (!matched) return chain < 0 ? left : chain;
     }
   }
 
@@ -564,7 +585,9 @@ class Compiler {
       ++pos_;
       return fold(add(Op::Not, at, parse_unary()));
     }
-    if (accept_word("not")) return fold(add(Op::Not, at, parse_unary()));
+    if (!scope_.python && accept_word("not")) {
+      return fold(add(Op::Not, at, parse_unary()));
+    }
     return parse_power();
   }
 
@@ -572,7 +595,13 @@ class Compiler {
     const int base = parse_primary();
     skip_space();
     const std::size_t at = pos_;
-    // `**` is Python's spelling, as L-Py files write it.
+    // `**` is Python's spelling, as L-Py files write it; Python's `^` is
+    // an exclusive or.
+    if (scope_.python && text_.substr(pos_).starts_with("^")) {
+      fail(at,
+           "Python's '^' (a bitwise exclusive or) is not supported; "
+           "'**' is the power");
+    }
     if (accept("^") || accept("**")) {
       return binary(Op::Power, at, base, parse_unary());
     }
@@ -1050,8 +1079,15 @@ class Compiler {
     if (word == "pass") {
       pos_ += word.size();
     } else if (word == "global") {
-      // Names are global once a hook assigned them (ExpressionScope).
-      pos_ = text_.size();
+      pos_ += word.size();
+      for (;;) {
+        skip_space();
+        const std::string name(peek_word());
+        if (name.empty()) fail(pos_, "expected a name after 'global'");
+        declared_globals_.push_back(name);
+        pos_ += name.size();
+        if (!accept(",")) break;
+      }
     } else if (word == "print") {
       skip_call();
     } else if (word == kProducedLocal && scope_.locals == nullptr) {
@@ -1079,7 +1115,7 @@ class Compiler {
       }
       pos_ += op == Op::Constant ? 1 : 2;
       if (word == kProducedLocal) fail(at, "'produce' cannot be assigned");
-      const Instruction store = store_for(word, at);
+      const Instruction store = python_store_for(word, at);
       if (op != Op::Constant) {
         code.push_back(load_for(word, at));
         ++depth_;
@@ -1102,6 +1138,28 @@ class Compiler {
                      "' after the statement");
     }
     return produced;
+  }
+
+  // Python's scoping: in a rule, a name assigned without `global` is
+  // local even where a global of that name exists; `global x` makes the
+  // assignment reach (or create) the global x. A hook's names are global.
+  Instruction python_store_for(const std::string& name, std::size_t at) {
+    const bool declared =
+        std::find(declared_globals_.begin(), declared_globals_.end(), name) !=
+        declared_globals_.end();
+    if (declared && scope_.globals != nullptr) {
+      if (const auto slot = global_slot(name)) {
+        return Instruction{.op = Op::StoreGlobal, .slot = *slot, .offset = at};
+      }
+      return new_global(name, at);
+    }
+    const bool parameter =
+        std::find(scope_.parameters.begin(), scope_.parameters.end(), name) !=
+        scope_.parameters.end();
+    if (scope_.locals != nullptr && !parameter && !local_slot(name)) {
+      return new_local(name, at);
+    }
+    return store_for(name, at);
   }
 
   [[noreturn]] void refuse_python(std::size_t at, const std::string& word) {
@@ -1310,24 +1368,33 @@ class Compiler {
     if (depth > 0) fail(pos_, "expected ')'");
   }
 
+  // A store into a global or local variable that `name` adds.
+  Instruction new_global(const std::string& name, std::size_t at) {
+    scope_.globals->push_back(name);
+    return Instruction{
+        .op = Op::StoreGlobal,
+        .slot = static_cast<std::uint32_t>(scope_.globals->size() - 1),
+        .offset = at};
+  }
+
+  Instruction new_local(const std::string& name, std::size_t at) {
+    scope_.locals->push_back(name);
+    return Instruction{
+        .op = Op::StoreSlot,
+        .slot = static_cast<std::uint32_t>(scope_.parameters.size() +
+                                           scope_.locals->size() - 1),
+        .offset = at};
+  }
+
   Instruction store_for(const std::string& name, std::size_t at) {
     if (const auto store = variable(name, at, Op::StoreSlot, Op::StoreGlobal)) {
       return *store;
     }
     if (scope_.assign_globals && scope_.globals != nullptr) {
-      scope_.globals->push_back(name);
-      return Instruction{
-          .op = Op::StoreGlobal,
-          .slot = static_cast<std::uint32_t>(scope_.globals->size() - 1),
-          .offset = at};
+      return new_global(name, at);
     }
     if (scope_.locals != nullptr) {
-      scope_.locals->push_back(name);
-      return Instruction{
-          .op = Op::StoreSlot,
-          .slot = static_cast<std::uint32_t>(scope_.parameters.size() +
-                                             scope_.locals->size() - 1),
-          .offset = at};
+      return new_local(name, at);
     }
     fail(at, "cannot assign to '" + name + "' here");
   }
@@ -1340,6 +1407,7 @@ class Compiler {
   int nesting_ = 0;
   int depth_ = 0;
   std::vector<PythonLine> lines_;
+  std::vector<std::string> declared_globals_;  // by `global`
   // The arguments of the Python functions being compiled in place.
   std::vector<std::vector<std::pair<std::string, int>>> frames_;
   Instruction produced_store_;

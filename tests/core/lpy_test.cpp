@@ -155,6 +155,18 @@ TEST(Lpy, RunsRuleBodiesOfAssignmentsConditionsAndProduce) {
                     1),
             "D(5)");
   EXPECT_EQ(derived("A(x) :\n  pass\n", 2), "A(0)");
+  // Python chains comparisons and binds `not` below them.
+  EXPECT_EQ(derived("A(x) :\n  produce B(0 < x < 3, -1 < x < 1, "
+                    "not x == 1, not 2 > 1 > 0)\n",
+                    1),
+            "B(0,1,1,0)");
+  EXPECT_EQ(located_error_of([] {
+              (void)lpy(
+                  "Axiom: A(1)\nproduction:\nA(x) :\n"
+                  "  produce B(x ^ 2)\nendlsystem\n");
+            }),
+            "4:15: Python's '^' (a bitwise exclusive or) is not supported; "
+            "'**' is the power");
 }
 
 // L-Py's hooks run as cpfg's Start: and its kin; what they assign is
@@ -166,6 +178,12 @@ TEST(Lpy, RunsTheHooksStartAndStartEachWithGlobalVariables) {
           "Axiom: A\nderivation length: 3\nproduction:\n"
           "A :\n  global m\n  produce B(m) A\nendlsystem\n");
   EXPECT_EQ(to_string(derive(g), g.alphabet), "B(11)B(12)B(13)A");
+  // Without `global`, a rule's assignment makes a local, as in Python.
+  const Grammar local =
+      lpy("def Start():\n  global m\n  m = 10\n"
+          "Axiom: AD\nderivation length: 1\nproduction:\n"
+          "A :\n  m = 5\n  produce B(m)\nD :\n  produce C(m)\nendlsystem\n");
+  EXPECT_EQ(to_string(derive(local), local.alphabet), "B(5)C(10)");
   EXPECT_EQ(located_error_of(
                 [] { (void)lpy("def Start():\n  produce A\nAxiom: A\n"); }),
             "2:3: 'produce' outside a rule");

@@ -457,6 +457,12 @@ class Derivation::Impl {
       std::vector<double> slots;
       if (const Production* d = decompositions_.first_applicable(
               symbol, params, &variables_, &slots)) {
+        if (d->successor_from_body) {
+          append_emitted(out,
+                         take_emitted(variables_, *grammar_.source, d->offset),
+                         step, depth + 1);
+          return;
+        }
         std::vector<double> values;
         d->successor.instantiate(
             d->has_statements() ? std::span<const double>(slots) : params,
@@ -473,6 +479,17 @@ class Derivation::Impl {
     }
     check_room(out, params.size());
     out.push_back(symbol, params, step);
+  }
+
+  void append_emitted(ModuleString& out, const EmittedModules& modules,
+                      std::uint32_t step, int depth) {
+    for (std::size_t k = 0; k < modules.symbols.size(); ++k) {
+      append_decomposed(out, modules.symbols[k],
+                        std::span<const double>(modules.values)
+                            .subspan(modules.begins[k],
+                                     modules.begins[k + 1] - modules.begins[k]),
+                        step, depth);
+    }
   }
 
   void append_successor(ModuleString& out, const Successor& successor,
@@ -534,10 +551,21 @@ class Derivation::Impl {
 
   void materialise_steps(ModuleString& next) {
     run(grammar_.start);
-    append_successor(string_, grammar_.axiom, {}, 0);
+    if (grammar_.axiom_body) {
+      std::vector<double> locals(
+          static_cast<std::size_t>(grammar_.axiom_local_count), 0.0);
+      grammar_.axiom_body->execute(locals, &variables_);
+      append_emitted(
+          string_,
+          take_emitted(variables_, *grammar_.source, grammar_.axiom_offset), 0,
+          0);
+    } else {
+      append_successor(string_, grammar_.axiom, {}, 0);
+    }
     cut(string_);
     for (step_ = 0; step_ < n_; ++step_) {
       const int step = step_;
+      variables_.iteration = step;
       // cpfg answers the queries before StartEach (generate.c's Derive).
       if (has_queries_) answer_queries(grammar_, string_, &variables_);
       run(grammar_.start_each);
@@ -560,7 +588,12 @@ class Derivation::Impl {
               [&](const Production& r) { return applies(string_, i, r); },
               [&] { return static_cast<std::uint64_t>(i); });
         }
-        if (rule != nullptr) {
+        if (rule != nullptr && rule->successor_from_body) {
+          append_emitted(
+              next, take_emitted(variables_, *grammar_.source, rule->offset),
+              k + 1, 0);
+          i += rule->predecessor_rest.size();
+        } else if (rule != nullptr) {
           append_successor(next, rule->successor, slots_, k + 1);
           i += rule->predecessor_rest.size();
         } else {

@@ -35,9 +35,10 @@ struct Function {
   int arity;
   bool cpfg_only = false;
   bool mathjs_only = false;
+  bool python_only = false;
 };
 
-constexpr std::array<Function, 25> kFunctions{{
+constexpr std::array<Function, 27> kFunctions{{
     {"sin", Op::Sin, 1},
     {"cos", Op::Cos, 1},
     {"tan", Op::Tan, 1},
@@ -67,6 +68,9 @@ constexpr std::array<Function, 25> kFunctions{{
     // Math.round, which is what cpfg's trunc computes.
     {"round", Op::Trunc, 1, false, true},
     {"pow", Op::Power, 2, false, true},
+    // Python's (L-Py): int truncates toward zero, round halves to even.
+    {"int", Op::Int, 1, false, false, true},
+    {"round", Op::RoundHalfEven, 1, false, false, true},
 }};
 
 int arity(Op op) {
@@ -74,6 +78,7 @@ int arity(Op op) {
     case Op::Constant:
     case Op::Parameter:
     case Op::Global:
+    case Op::Iteration:
       return 0;
     case Op::Negate:
     case Op::Not:
@@ -202,6 +207,10 @@ double apply(Op op, double a, double b, bool& divide_by_zero) {
     }
     case Op::Trunc:
       return std::floor(a + 0.5);
+    case Op::Int:
+      return std::trunc(a);
+    case Op::RoundHalfEven:
+      return a - std::remainder(a, 1.0);
     case Op::Sign:
       return a > 0.0 ? 1.0 : (a < 0.0 ? -1.0 : 0.0);
     default:
@@ -229,6 +238,13 @@ bool is_word_byte(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
 }
 
+// True when bytes from `at` hold the word `word` whole.
+bool starts_word(std::string_view text, std::size_t at, std::size_t end,
+                 std::string_view word) {
+  return text.substr(at, end - at).starts_with(word) &&
+         (at + word.size() >= end || !is_word_byte(text[at + word.size()]));
+}
+
 // Python's lines in bytes [begin, end) of `text`: a line goes on while a
 // bracket is open or it ends with `\`; `#` outside strings starts a
 // comment; a tab indents to the next multiple of 8 (Python's tokenizer).
@@ -251,8 +267,18 @@ std::vector<PythonLine> python_lines(std::string_view text, std::size_t begin,
     char quote = 0;
     std::size_t code_end = first;
     std::size_t j = first;
+    // L-Py reads `produce …` and `nproduce …` to the end of the line as
+    // L-system modules, where `[` and `]` are branches, not Python's
+    // brackets (`nproduce [ +(60)` opens a branch a later line closes).
+    bool statement_start = true;
+    bool successor = false;
     for (; j < end; ++j) {
       const char c = text[j];
+      if (statement_start && c != ' ' && c != '\t') {
+        statement_start = false;
+        successor = depth == 0 && (starts_word(text, j, end, "produce") ||
+                                   starts_word(text, j, end, "nproduce"));
+      }
       if (quote != 0) {
         if (c == '\\') {
           ++j;
@@ -274,8 +300,11 @@ std::vector<PythonLine> python_lines(std::string_view text, std::size_t begin,
         break;
       }
       if (c == '\'' || c == '"') quote = c;
-      if (c == '(' || c == '[' || c == '{') ++depth;
-      if ((c == ')' || c == ']' || c == '}') && depth > 0) --depth;
+      if (!successor) {
+        if (c == '(' || c == '[' || c == '{') ++depth;
+        if ((c == ')' || c == ']' || c == '}') && depth > 0) --depth;
+        if (c == ':' && depth == 0) statement_start = true;
+      }
       if (c != ' ' && c != '\t' && c != '\r') code_end = j + 1;
     }
     if (code_end > first) lines.push_back(PythonLine{first, code_end, column});
@@ -304,13 +333,6 @@ std::size_t python_colon(std::string_view text, std::size_t from,
     }
   }
   return std::string_view::npos;
-}
-
-// True when bytes from `at` hold the word `word` whole.
-bool starts_word(std::string_view text, std::size_t at, std::size_t end,
-                 std::string_view word) {
-  return text.substr(at, end - at).starts_with(word) &&
-         (at + word.size() >= end || !is_word_byte(text[at + word.size()]));
 }
 
 // Recursive descent over bytes [begin, end) of the source, building a tree
@@ -392,7 +414,10 @@ class Compiler {
   // Folds a node whose operands are constants into a constant.
   int fold(int index) {
     Node& node = nodes_[static_cast<std::size_t>(index)];
-    if (is_random(node.instruction.op)) return index;
+    if (is_random(node.instruction.op) ||
+        node.instruction.op == Op::Iteration) {
+      return index;
+    }
     const auto is_const = [&](int i) {
       return i < 0 ||
              nodes_[static_cast<std::size_t>(i)].instruction.op == Op::Constant;
@@ -797,6 +822,12 @@ class Compiler {
 
   int parse_call(const std::string& name, std::size_t at) {
     if (scope_.cpfg && name == "func") return parse_func(at);
+    if (scope_.python && name == "getIterationNb") {
+      if (!parse_arguments().empty()) {
+        fail(at, "'getIterationNb' takes no arguments");
+      }
+      return add(Op::Iteration, at);
+    }
     if ((scope_.mathjs && name == "random") ||
         (scope_.python && (name == "random" || name == "uniform"))) {
       return parse_random(at);
@@ -807,15 +838,28 @@ class Compiler {
         return inline_python_function(name, it->second, at);
       }
     }
+    if (scope_.python && name == "float") {
+      // Python's float(x): x, in a language of doubles.
+      const std::vector<int> args = parse_arguments();
+      if (args.size() != 1) fail(at, "'float' takes 1 argument here");
+      return args.front();
+    }
+    const auto available = [&](const Function& f) {
+      if (f.cpfg_only) return scope_.cpfg;
+      if (f.python_only) return scope_.python;
+      if (f.mathjs_only) {
+        return scope_.mathjs || (scope_.python && f.name == "pow");
+      }
+      return true;
+    };
     const Function* function = nullptr;
     for (const Function& f : kFunctions) {
-      if (f.name == name) function = &f;
+      if (f.name == name && available(f)) {
+        function = &f;
+        break;
+      }
     }
-    if (function == nullptr || (function->cpfg_only && !scope_.cpfg) ||
-        (function->mathjs_only && !scope_.mathjs &&
-         !(scope_.python && name == "pow"))) {
-      fail(at, "'" + name + "' is not a function");
-    }
+    if (function == nullptr) fail(at, "'" + name + "' is not a function");
     std::vector<int> args = parse_arguments();
     if (static_cast<int>(args.size()) != function->arity) {
       fail(at, "'" + name + "' takes " + std::to_string(function->arity) +
@@ -958,11 +1002,23 @@ class Compiler {
       produced_store_ = store_for(std::string(kProducedLocal), at);
       code.push_back(produced_store_);
     }
+    const bool builds = static_cast<bool>(scope_.read_successor);
+    if (builds) code.push_back(Instruction{.op = Op::EmitClear, .offset = at});
     depth_ = 1;
     std::size_t li = 0;
     if (!lines_.empty()) python_block(code, li, lines_.front().indent, whole);
     if (li < lines_.size()) fail(lines_[li].begin, "unexpected indentation");
     text_ = whole;
+    if (builds && scope_.locals != nullptr) {
+      // L-Py's LsysRule::__postcall_function: a body that ends without
+      // `produce` applies when it has `nproduce`d something.
+      code.push_back(Instruction{
+          .op = Op::Parameter, .slot = produced_store_.slot, .offset = at});
+      code.push_back(Instruction{.op = Op::Emitted, .offset = at});
+      code.push_back(Instruction{.op = Op::Or, .offset = at});
+      code.push_back(produced_store_);
+      depth_ = std::max(depth_, 2);
+    }
     stack_depth = std::max(1, depth_);
     if (stack_depth > kMaxStack) fail(at, "statements are nested too deeply");
     return code;
@@ -1002,6 +1058,14 @@ class Compiler {
       pos_ += 2;
       return python_if(code, li, indent, whole);
     }
+    if (starts_word(whole, pos_, line.end, "for")) {
+      pos_ += 3;
+      return python_for(code, li, indent, whole);
+    }
+    if (starts_word(whole, pos_, line.end, "while")) {
+      pos_ += 5;
+      return python_while(code, li, indent, whole);
+    }
     for (const std::string_view word : {"elif", "else"}) {
       if (starts_word(whole, pos_, line.end, word)) {
         fail(pos_, "'" + std::string(word) + "' without 'if'");
@@ -1013,13 +1077,19 @@ class Compiler {
     return produced;
   }
 
+  // The `:` that ends the header of a compound statement from pos_.
+  std::size_t header_colon(std::string_view whole, const PythonLine& line) {
+    const std::size_t colon = python_colon(whole, pos_, line.end);
+    if (colon == std::string_view::npos) fail(line.end, "expected ':'");
+    return colon;
+  }
+
   // `if` (or `elif`) at pos_ of line li: the condition, its suite, and
   // the `elif` or `else` that follows at the same indentation.
   bool python_if(std::vector<Instruction>& code, std::size_t& li, int indent,
                  std::string_view whole) {
     const PythonLine line = lines_[li];
-    const std::size_t colon = python_colon(whole, pos_, line.end);
-    if (colon == std::string_view::npos) fail(line.end, "expected ':'");
+    const std::size_t colon = header_colon(whole, line);
     text_ = whole.substr(0, colon);
     expression_into(code);
     skip_space();
@@ -1049,6 +1119,206 @@ class Compiler {
     land(code, to_else);
     text_ = whole;
     return produced;
+  }
+
+  // A loop's bookkeeping: the jumps its `break`s and `continue`s wait to
+  // have landed.
+  struct Loop {
+    std::vector<std::size_t> breaks;
+    std::vector<std::size_t> continues;
+  };
+
+  // Stops a loop once its body has produced: `produce` ends the body.
+  void leave_loop_if_produced(std::vector<Instruction>& code,
+                              std::vector<std::size_t>& exits) {
+    if (scope_.locals == nullptr) return;
+    code.push_back(Instruction{
+        .op = Op::Parameter, .slot = produced_store_.slot, .offset = pos_});
+    code.push_back(Instruction{.op = Op::Not, .offset = pos_});
+    exits.push_back(jump(code, Op::JumpIfZero));
+  }
+
+  // A slot for what the source cannot name: a loop's counter and bounds.
+  Instruction hidden_store(std::size_t at) {
+    std::string name = "#";
+    name += std::to_string(++hidden_);
+    if (scope_.locals != nullptr) return new_local(name, at);
+    return new_global(name, at);
+  }
+
+  static Instruction load_of(const Instruction& store) {
+    return Instruction{
+        .op = store.op == Op::StoreGlobal ? Op::Global : Op::Parameter,
+        .slot = store.slot,
+        .offset = store.offset};
+  }
+
+  // `for name in range(…):` at pos_ of line li. Python evaluates range's
+  // arguments once and assigns the name at the start of each pass, so the
+  // body may change the name without changing the count.
+  bool python_for(std::vector<Instruction>& code, std::size_t& li, int indent,
+                  std::string_view whole) {
+    const PythonLine line = lines_[li];
+    const std::size_t colon = header_colon(whole, line);
+    text_ = whole.substr(0, colon);
+    skip_space();
+    const std::size_t name_at = pos_;
+    const std::string name(peek_word());
+    if (name.empty() || !is_name_start(static_cast<unsigned char>(name[0]))) {
+      fail(pos_, "expected a name after 'for'");
+    }
+    pos_ += name.size();
+    skip_space();
+    if (peek_word() != "in") {
+      fail(pos_, "lsolid runs 'for' loops over range(…) only");
+    }
+    pos_ += 2;
+    skip_space();
+    if (peek_word() != "range") {
+      fail(pos_, "lsolid runs 'for' loops over range(…) only");
+    }
+    pos_ += 5;
+    skip_space();
+    if (!accept("(")) fail(pos_, "expected '(' after 'range'");
+    const Instruction counter = hidden_store(name_at);
+    const Instruction stop = hidden_store(name_at);
+    const Instruction step = hidden_store(name_at);
+    const auto constant = [&](double value, const Instruction& store) {
+      code.push_back(
+          Instruction{.op = Op::Constant, .value = value, .offset = name_at});
+      code.push_back(store);
+    };
+    std::vector<std::size_t> starts;
+    int count = 0;
+    double step_value = 1.0;
+    for (;;) {
+      const std::size_t begin = code.size();
+      expression_into(code);
+      starts.push_back(begin);
+      ++count;
+      if (count == 1) code.push_back(stop);
+      if (count == 2) code.push_back(stop);
+      if (count == 3) {
+        const bool is_constant =
+            code.size() == begin + 1 && code.back().op == Op::Constant;
+        if (is_constant && code.back().value == 0.0) {
+          fail(code.back().offset, "range's step cannot be 0");
+        }
+        step_value = is_constant ? code.back().value : 0.0;
+        code.push_back(step);
+      }
+      if (accept(")")) break;
+      if (count == 3 || !accept(",")) fail(pos_, "expected ',' or ')'");
+      if (count == 1) {
+        // range(start, stop): what was read is the start.
+        code.back() = counter;
+      }
+    }
+    if (count == 1) constant(0.0, counter);
+    if (count < 3) constant(1.0, step);
+    skip_space();
+    if (pos_ < colon) fail(pos_, "expected ':'");
+    depth_ = std::max(depth_, 4);
+    Loop loop;
+    const auto top = static_cast<std::uint32_t>(code.size());
+    leave_loop_if_produced(code, loop.breaks);
+    const auto compare = [&](Op op) {
+      code.push_back(load_of(counter));
+      code.push_back(load_of(stop));
+      code.push_back(Instruction{.op = op, .offset = name_at});
+    };
+    if (step_value > 0.0) {
+      compare(Op::Less);
+    } else if (step_value < 0.0) {
+      compare(Op::Greater);
+    } else {
+      // A step known only when running: (step > 0 and i < stop) or
+      // (step < 0 and i > stop); a step of 0 never enters the loop.
+      code.push_back(load_of(step));
+      code.push_back(Instruction{.op = Op::Constant, .offset = name_at});
+      code.push_back(Instruction{.op = Op::Greater, .offset = name_at});
+      compare(Op::Less);
+      code.push_back(Instruction{.op = Op::And, .offset = name_at});
+      code.push_back(load_of(step));
+      code.push_back(Instruction{.op = Op::Constant, .offset = name_at});
+      code.push_back(Instruction{.op = Op::Less, .offset = name_at});
+      compare(Op::Greater);
+      code.push_back(Instruction{.op = Op::And, .offset = name_at});
+      code.push_back(Instruction{.op = Op::Or, .offset = name_at});
+    }
+    loop.breaks.push_back(jump(code, Op::JumpIfZero));
+    code.push_back(load_of(counter));
+    code.push_back(python_store_for(name, name_at));
+    loops_.push_back(std::move(loop));
+    const bool produced = python_suite(code, li, indent, colon + 1, whole);
+    Loop body = std::move(loops_.back());
+    loops_.pop_back();
+    for (const std::size_t c : body.continues) land(code, c);
+    code.push_back(load_of(counter));
+    code.push_back(load_of(step));
+    code.push_back(Instruction{.op = Op::Add, .offset = name_at});
+    code.push_back(counter);
+    code.push_back(Instruction{.op = Op::Jump, .slot = top, .offset = name_at});
+    for (const std::size_t b : body.breaks) land(code, b);
+    text_ = whole;
+    return produced;
+  }
+
+  // `while c:` at pos_ of line li.
+  bool python_while(std::vector<Instruction>& code, std::size_t& li, int indent,
+                    std::string_view whole) {
+    const PythonLine line = lines_[li];
+    const std::size_t colon = header_colon(whole, line);
+    const std::size_t at = pos_;
+    Loop loop;
+    const auto top = static_cast<std::uint32_t>(code.size());
+    leave_loop_if_produced(code, loop.breaks);
+    text_ = whole.substr(0, colon);
+    expression_into(code);
+    skip_space();
+    if (pos_ < colon) fail(pos_, "expected ':'");
+    loop.breaks.push_back(jump(code, Op::JumpIfZero));
+    loops_.push_back(std::move(loop));
+    const bool produced = python_suite(code, li, indent, colon + 1, whole);
+    Loop body = std::move(loops_.back());
+    loops_.pop_back();
+    for (const std::size_t c : body.continues) land(code, c);
+    code.push_back(Instruction{.op = Op::Jump, .slot = top, .offset = at});
+    for (const std::size_t b : body.breaks) land(code, b);
+    text_ = whole;
+    return produced;
+  }
+
+  // `nproduce …` or, in a body that builds its successor, `produce …`:
+  // each module's arguments, then Emit.
+  void emit_successor(std::vector<Instruction>& code, std::size_t at) {
+    skip_space();
+    const std::size_t end = text_.size();
+    const std::string_view whole = text_;
+    for (const SuccessorModuleText& m : scope_.read_successor(pos_, end)) {
+      int pushed = 0;
+      for (const auto& [begin, arg_end] : m.arguments) {
+        text_ = whole.substr(0, arg_end);
+        pos_ = begin;
+        const int before = depth_;
+        depth_ = 0;
+        expression_into(code);
+        skip_space();
+        if (pos_ < arg_end) {
+          fail(pos_, "unexpected '" + std::string(peek_code_point()) + "'");
+        }
+        depth_ = std::max(before, depth_ + pushed);
+        ++pushed;
+      }
+      if (pushed + 1 > kMaxStack) fail(m.offset, "too many parameters");
+      code.push_back(Instruction{.op = Op::Emit,
+                                 .slot = m.symbol,
+                                 .value = static_cast<double>(pushed),
+                                 .offset = m.offset});
+    }
+    text_ = whole;
+    pos_ = end;
+    (void)at;
   }
 
   // What follows a compound statement's colon: a simple statement on the
@@ -1090,8 +1360,26 @@ class Compiler {
       }
     } else if (word == "print") {
       skip_call();
-    } else if (word == kProducedLocal && scope_.locals == nullptr) {
-      fail(at, "'produce' outside a rule");
+    } else if ((word == kProducedLocal || word == "nproduce") &&
+               scope_.locals == nullptr) {
+      fail(at, "'" + word + "' outside a rule");
+    } else if (word == "nproduce") {
+      if (!scope_.read_successor) refuse_python(at, word);
+      pos_ += word.size();
+      emit_successor(code, at);
+    } else if (word == kProducedLocal && scope_.read_successor) {
+      pos_ += word.size();
+      emit_successor(code, at);
+      code.push_back(
+          Instruction{.op = Op::Constant, .value = 1.0, .offset = at});
+      code.push_back(produced_store_);
+      return true;
+    } else if (word == "break" || word == "continue") {
+      if (loops_.empty()) fail(at, "'" + word + "' outside a loop");
+      pos_ += word.size();
+      auto& jumps =
+          word == "break" ? loops_.back().breaks : loops_.back().continues;
+      jumps.push_back(jump(code, Op::Jump));
     } else if (word == kProducedLocal) {
       code.push_back(Instruction{.op = Op::Constant,
                                  .value = static_cast<double>(++produces_),
@@ -1166,7 +1454,8 @@ class Compiler {
     fail(at, (word.empty() ? std::string("this Python statement")
                            : "Python's '" + word + "'") +
                  " is not supported: lsolid runs assignments, "
-                 "if/elif/else, pass, global, print and produce "
+                 "if/elif/else, for … in range(…), while, break, continue, "
+                 "pass, global, print, produce and nproduce "
                  "(docs/dialects/lpy.md)");
   }
 
@@ -1412,6 +1701,8 @@ class Compiler {
   std::vector<std::vector<std::pair<std::string, int>>> frames_;
   Instruction produced_store_;
   int produces_ = 0;
+  std::vector<Loop> loops_;
+  int hidden_ = 0;
 };
 
 }  // namespace
@@ -1449,6 +1740,7 @@ double Expression::run(const double* read, double* write,
   int top = -1;
   std::size_t jumps_back = 0;
   constexpr double kMostDraws = 1e7;
+  constexpr std::size_t kMostEmitted = 10'000'000;
   double draws = 0.0;
   const auto need_variables = [&](const Instruction& in) -> Variables& {
     if (variables == nullptr) {
@@ -1495,6 +1787,37 @@ double Expression::run(const double* read, double* write,
         break;
       case Op::Ran:
         at(top) *= erand48(need_variables(in).random_state);
+        break;
+      case Op::EmitClear:
+        need_variables(in).emitted = EmittedModules{};
+        break;
+      case Op::Emit: {
+        // L-Py's nproduce: the module and the values on top of the stack.
+        EmittedModules& e = need_variables(in).emitted;
+        const auto n = static_cast<int>(in.value);
+        if (e.symbols.size() >= kMostEmitted) {
+          throw error_at(*source_, in.offset,
+                         "this body produces more than 10 million modules; "
+                         "lsolid stops it");
+        }
+        for (int k = top - n + 1; k <= top; ++k) {
+          if (!std::isfinite(at(k))) {
+            throw error_at(*source_, in.offset,
+                           "a parameter of this module is not a finite "
+                           "number");
+          }
+          e.values.push_back(at(k));
+        }
+        top -= n;
+        e.symbols.push_back(in.slot);
+        e.begins.push_back(static_cast<std::uint32_t>(e.values.size()));
+        break;
+      }
+      case Op::Iteration:
+        at(++top) = need_variables(in).iteration;
+        break;
+      case Op::Emitted:
+        at(++top) = need_variables(in).emitted.symbols.empty() ? 0.0 : 1.0;
         break;
       case Op::Func: {
         // cpfg clamps x to [0, 1]; between samples, a straight line.
@@ -1574,7 +1897,9 @@ bool calls_functions(const std::vector<Expression::Instruction>& code) {
 
 bool touches_variables(const std::vector<Expression::Instruction>& code) {
   return std::any_of(code.begin(), code.end(), [](const auto& in) {
-    return in.op == Op::Global || in.op == Op::StoreGlobal || is_random(in.op);
+    return in.op == Op::Global || in.op == Op::StoreGlobal ||
+           in.op == Op::EmitClear || in.op == Op::Emit ||
+           in.op == Op::Emitted || in.op == Op::Iteration || is_random(in.op);
   });
 }
 
@@ -1639,26 +1964,47 @@ Expression parse_python_statements(std::shared_ptr<const SourceFile> source,
   return Expression::statements(std::move(source), begin, end, scope, true);
 }
 
+namespace {
+
+// Where a line's simple statement starts: after the colon of a compound
+// statement's header on the same line (`if x: produce F`), else at the
+// line's start.
+std::size_t simple_statement_start(std::string_view text,
+                                   const PythonLine& line) {
+  for (const std::string_view word : {"if", "elif", "else", "for", "while"}) {
+    if (!starts_word(text, line.begin, line.end, word)) continue;
+    const std::size_t colon = python_colon(text, line.begin, line.end);
+    if (colon == std::string_view::npos) return line.begin;
+    std::size_t at = colon + 1;
+    while (at < line.end && (text[at] == ' ' || text[at] == '\t')) ++at;
+    return at;
+  }
+  return line.begin;
+}
+
+}  // namespace
+
 std::vector<std::pair<std::size_t, std::size_t>> python_successors(
     const SourceFile& source, std::size_t begin, std::size_t end) {
   const std::string_view text = std::string_view(source.text()).substr(0, end);
   std::vector<std::pair<std::size_t, std::size_t>> out;
   for (const PythonLine& line : python_lines(text, begin, end)) {
-    std::size_t at = line.begin;
-    for (const std::string_view word : {"if", "elif", "else"}) {
-      if (starts_word(text, at, line.end, word)) {
-        const std::size_t colon = python_colon(text, at, line.end);
-        if (colon == std::string_view::npos) break;
-        at = colon + 1;
-        while (at < line.end && (text[at] == ' ' || text[at] == '\t')) ++at;
-        break;
-      }
-    }
+    const std::size_t at = simple_statement_start(text, line);
     if (starts_word(text, at, line.end, kProducedLocal)) {
       out.emplace_back(at + kProducedLocal.size(), line.end);
     }
   }
   return out;
+}
+
+bool python_builds_successor(const SourceFile& source, std::size_t begin,
+                             std::size_t end) {
+  const std::string_view text = std::string_view(source.text()).substr(0, end);
+  const std::vector<PythonLine> lines = python_lines(text, begin, end);
+  return std::any_of(lines.begin(), lines.end(), [&](const PythonLine& line) {
+    return starts_word(text, simple_statement_start(text, line), line.end,
+                       "nproduce");
+  });
 }
 
 Expression parse_statements(std::shared_ptr<const SourceFile> source,

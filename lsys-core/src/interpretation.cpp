@@ -258,6 +258,18 @@ class Interpreter {
       if (const Production* rule = homomorphisms_.first_applicable(
               symbol, params, variables_,
               &slot_buffers_[static_cast<std::size_t>(depth)])) {
+        if (rule->successor_from_body) {
+          const EmittedModules modules =
+              take_emitted(*variables_, *grammar_.source, rule->offset);
+          for (std::size_t k = 0; k < modules.symbols.size(); ++k) {
+            interpret(modules.symbols[k],
+                      std::span<const double>(modules.values)
+                          .subspan(modules.begins[k],
+                                   modules.begins[k + 1] - modules.begins[k]),
+                      generation, depth + 1);
+          }
+          return;
+        }
         std::vector<double>& values = buffers_[static_cast<std::size_t>(depth)];
         rule->successor.instantiate(
             rule->has_statements()

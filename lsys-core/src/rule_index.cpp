@@ -3,6 +3,9 @@
 #include "rule_index.hpp"
 
 #include <stdexcept>
+#include <utility>
+
+#include "lsys/diagnostic.hpp"
 
 namespace lsys {
 
@@ -40,6 +43,27 @@ const Production* RuleIndex::first_applicable(
     if (statements_and_condition_hold(*rule, *slots, variables)) return rule;
   }
   return nullptr;
+}
+
+EmittedModules take_emitted(Variables& variables, const SourceFile& source,
+                            std::size_t offset) {
+  EmittedModules out = std::move(variables.emitted);
+  variables.emitted = EmittedModules{};
+  // L-Py checks the string a body produced when the rule returns
+  // (nproduce's pieces may open a branch that a later piece closes).
+  int depth = 0;
+  for (const SymbolId symbol : out.symbols) {
+    if (symbol == kBranchOpen) ++depth;
+    if (symbol == kBranchClose && --depth < 0) {
+      throw error_at(source, offset,
+                     "this body produced a ']' that no '[' before it opened");
+    }
+  }
+  if (depth > 0) {
+    throw error_at(source, offset,
+                   "this body produced a '[' that it did not close");
+  }
+  return out;
 }
 
 }  // namespace lsys

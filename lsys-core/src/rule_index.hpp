@@ -77,4 +77,13 @@ class RuleIndex {
   return true;
 }
 
+/// The modules that an L-Py body which builds its successor
+/// (Production::successor_from_body, Grammar::axiom_body) has just
+/// produced, moved out of `variables` so that rules run while they are
+/// used cannot overwrite them.
+/// @throws ParseError at `offset` when their brackets do not balance.
+[[nodiscard]] EmittedModules take_emitted(Variables& variables,
+                                          const SourceFile& source,
+                                          std::size_t offset);
+
 }  // namespace lsys

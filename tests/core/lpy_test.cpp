@@ -247,15 +247,135 @@ TEST(Lpy, RefusesPythonARuleBodyCannotRunAtItsPlace) {
     });
   };
   const std::string tail =
-      " is not supported: lsolid runs assignments, if/elif/else, pass, "
-      "global, print and produce (docs/dialects/lpy.md)";
-  EXPECT_EQ(error("  for i in range(3):\n    nproduce F\n  produce\n"),
-            "4:3: Python's 'for'" + tail);
+      " is not supported: lsolid runs assignments, if/elif/else, for … in "
+      "range(…), while, break, continue, pass, global, print, produce and "
+      "nproduce (docs/dialects/lpy.md)";
+  EXPECT_EQ(error("  for m in modules:\n    nproduce F\n"),
+            "4:12: lsolid runs 'for' loops over range(…) only");
+  EXPECT_EQ(error("  return 1\n"), "4:3: Python's 'return'" + tail);
   // Refused even where no produce follows.
-  EXPECT_EQ(error("  nproduce F\n"), "4:3: Python's 'nproduce'" + tail);
+  EXPECT_EQ(error("  x = 1\n  yield x\n"), "5:3: Python's 'yield'" + tail);
+  EXPECT_EQ(error("  break\n  produce F\n"), "4:3: 'break' outside a loop");
   EXPECT_EQ(error("  if 1:\n  produce F\n"),
             "4:8: expected an indented block after ':'");
   EXPECT_EQ(error("  x = 1\n    produce F\n"), "5:5: unexpected indentation");
+  EXPECT_EQ(error("  for i in range(1, 5, 0):\n    nproduce F\n"),
+            "4:24: range's step cannot be 0");
+}
+
+// L-Py's nproduce: the body builds its successor piece by piece, in loops
+// and branches, and a branch one piece opens another may close.
+TEST(Lpy, BuildsASuccessorAsTheBodyRunsWithNproduceAndLoops) {
+  const auto derived = [](std::string_view axiom, std::string_view rules) {
+    const Grammar g = lpy("Axiom: " + std::string(axiom) +
+                          "\nderivation length: 1\nproduction:\n" +
+                          std::string(rules) + "endlsystem\n");
+    return to_string(derive(g), g.alphabet);
+  };
+  EXPECT_EQ(derived("A(4)",
+                    "A(n) :\n  for i in range(n):\n    nproduce F(i)\n"
+                    "    if i % 2 == 0:\n      nproduce [ +(30)\n"
+                    "      nproduce F(1) ]\n"),
+            "F(0)[+(30)F(1)]F(1)F(2)[+(30)F(1)]F(3)");
+  // while, continue, break; range with a start and a negative step; the
+  // body may change the loop's name without changing the count.
+  EXPECT_EQ(derived("B",
+                    "B :\n  i = 0\n  while True:\n    i += 1\n"
+                    "    if i == 2: continue\n    if i > 4: break\n"
+                    "    nproduce X(i)\n"
+                    "  for j in range(5, 0, -2):\n    nproduce Y(j)\n"
+                    "    j = 100\n"),
+            "X(1)X(3)X(4)Y(5)Y(3)Y(1)");
+  // produce appends its own modules and ends the body.
+  EXPECT_EQ(derived("C", "C :\n  nproduce F\n  produce G(1)\n  nproduce H\n"),
+            "FG(1)");
+  // A body that produces nothing leaves the module to the next rule, and
+  // `produce` alone erases it.
+  EXPECT_EQ(derived("DE",
+                    "D :\n  for i in range(0):\n    nproduce F\n"
+                    "E :\n  nproduce F\n  produce\n"),
+            "DF");
+  EXPECT_EQ(
+      located_error_of([&] { (void)derived("A", "A :\n  nproduce [ F\n"); }),
+      "4:1: this body produced a '[' that it did not close");
+}
+
+// `Axiom:` above a Python body: the body produces the axiom (L-Py's
+// tutorial of Fibonacci numbers passed along a row of modules).
+TEST(Lpy, RunsAnAxiomWrittenAsPython) {
+  const Grammar g =
+      lpy("nbValues = 5\nAxiom: \n  nproduce -(90)\n"
+          "  for i in range(nbValues):\n    nproduce I(1)\n\n"
+          "derivation length: 3\nproduction:\n"
+          "I(j)I(k) < I(i) --> I(k+j)\nendlsystem\n");
+  EXPECT_EQ(to_string(derive(g), g.alphabet), "-(90)I(1)I(1)I(2)I(3)I(5)");
+  EXPECT_EQ(located_error_of([] {
+              (void)lpy("Axiom:\n  x = 1\nproduction:\nendlsystem\n");
+            }),
+            "1:1: an axiom built by Python statements without 'nproduce' or "
+            "'produce': this is Python code, and lsolid does not run Python; "
+            "it reads the declarative part of L-Py (docs/dialects/lpy.md)");
+}
+
+TEST(Lpy, KnowsTheStepNumberAndPythonsIntRoundAndFloat) {
+  const Grammar g =
+      lpy("Axiom: A\nderivation length: int(3.9)\nproduction:\n"
+          "A :\n  produce B(getIterationNb(), int(-2.7), round(2.5), "
+          "round(3.5), float(2)) A\nendlsystem\n");
+  EXPECT_EQ(to_string(derive(g), g.alphabet),
+            "B(0,-2,2,4,2)B(1,-2,2,4,2)B(2,-2,2,4,2)A");
+}
+
+// PlantGL's turtle reads the parameters it knows: `-(90, t)` turns by 90.
+TEST(Lpy, IgnoresTurtleParametersPlantGLDoesNotRead) {
+  const Skeleton s = drawn("F-(90, 7)f(1, 2)F(1)");
+  ASSERT_EQ(s.segments.size(), 2U);
+  // `-` turns right, to (1, 0, 0) from PlantGL's first heading and left.
+  expect_near(s.segments[1].p0, {1, 0, 1});
+  expect_near(s.segments[1].p1, {2, 0, 1});
+}
+
+// PlantGL's predefined leaf `~l`: a flat hexagon one long along the
+// heading and half as wide, scaled by its parameter.
+TEST(Lpy, DrawsPlantGLsPredefinedLeaf) {
+  const Skeleton s = drawn("F(1)+(90)~l(2, 5)");
+  ASSERT_EQ(s.sheets.size(), 1U);
+  const Sheet& leaf = s.sheets[0];
+  ASSERT_EQ(leaf.points.size(), 7U);
+  EXPECT_EQ(leaf.triangles.size(), 6U);
+  // Heading (-1, 0, 0) after the turn, left (0, 0, -1).
+  expect_near(leaf.points[1], {0, 0, 1});
+  expect_near(leaf.points[4], {-2, 0, 1});
+  expect_near(leaf.points[2], {-2.0 / 3.0, 0, 0.5});
+  expect_near(leaf.points[5], {-4.0 / 3.0, 0, 1.5});
+}
+
+// A label draws nothing in a solid: left out, its Python string unread,
+// with a warning.
+TEST(Lpy, LeavesOutLabelsWithAWarning) {
+  const Grammar g =
+      lpy("Axiom: F@L(\"a (b)\")F Label(str(3))\nderivation length: 0\n"
+          "production:\nendlsystem\n");
+  EXPECT_EQ(interpret(g).segments.size(), 2U);
+  ASSERT_EQ(g.warnings.size(), 2U);
+  EXPECT_EQ(g.warnings[0],
+            "'@L' (a label) is left out: it draws nothing in a solid");
+}
+
+// The editor's scalars are constants, as L-Py sets them in the context;
+// the file's own assignment of the same name stays.
+TEST(Lpy, ReadsTheEditorsScalarsAsConstants) {
+  const Grammar g = lpy(
+      "n = 2\nAxiom: F(size)\nderivation length: n\nproduction:\n"
+      "endlsystem\n###### INITIALISATION ######\n"
+      "def __initialiseContext__(context):\n"
+      "\tscalars = [('V', 'Category'), ('size', 'Float', 1.5, 0, 10, 2), "
+      "('n', 'Integer', 7, 0, 9), ('old', 4, 1, 20), ('on', 'Bool', True)]\n");
+  EXPECT_DOUBLE_EQ(g.constants.at("size"), 1.5);
+  EXPECT_DOUBLE_EQ(g.constants.at("old"), 4.0);
+  EXPECT_DOUBLE_EQ(g.constants.at("on"), 1.0);
+  EXPECT_EQ(g.settings.derivation_length, 2);
+  EXPECT_EQ(g.constants.count("V"), 0U);
 }
 
 TEST(Lpy, DrawsSpheresByTheirRadius) {
@@ -280,8 +400,9 @@ TEST(Lpy, DrawsCirclesByTheirRadiusAcrossTheHeading) {
 TEST(Lpy, RefusesModulesItCannotBuildByTheirWholeName) {
   EXPECT_EQ(located_error_of([] { (void)drawn("F@B(0.5)"); }),
             "1:9: '@B' (a box) is not supported by lsolid");
-  EXPECT_EQ(located_error_of([] { (void)drawn("F~l(2)"); }),
-            "1:9: '~' (a predefined surface) is not supported by lsolid");
+  EXPECT_EQ(located_error_of([] { (void)drawn("F~x(2)"); }),
+            "1:9: '~' (a predefined surface other than ~l, PlantGL's leaf) is "
+            "not supported by lsolid");
   // @Gc and @Ge are whole modules, never @, G and c.
   const Skeleton s = drawn("@GcF(2)+(30)F@Ge");
   EXPECT_EQ(s.segments.size(), 2U);

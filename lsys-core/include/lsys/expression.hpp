@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -28,6 +29,15 @@ struct PythonFunction {
   std::vector<std::string> parameters;
   std::size_t begin = 0;
   std::size_t end = 0;
+};
+
+/// A module of a successor as written: its name (interned) and the bytes of
+/// each argument, for a Python body that builds its successor as it runs
+/// (ExpressionScope::read_successor).
+struct SuccessorModuleText {
+  std::uint32_t symbol = 0;
+  std::size_t offset = 0;
+  std::vector<std::pair<std::size_t, std::size_t>> arguments;
 };
 
 /// The names an expression may use: the formal parameters of the production
@@ -68,6 +78,21 @@ struct ExpressionScope {
   const std::vector<std::string>* python_modules = nullptr;
   /// L-Py's functions of one `return`, which calls compile in place.
   const std::map<std::string, PythonFunction>* python_functions = nullptr;
+  /// When set, a Python body builds its successor as it runs (L-Py's
+  /// `nproduce`, and an axiom written as Python): `nproduce …` and
+  /// `produce …` append their modules, read by this function from the
+  /// bytes [begin, end) of the statement, to Variables::emitted.
+  std::function<std::vector<SuccessorModuleText>(std::size_t, std::size_t)>
+      read_successor;
+};
+
+/// The modules a Python body has appended with `nproduce` or `produce`
+/// (ExpressionScope::read_successor): their symbols, and their values laid
+/// out as Successor::parameter_begins lays them out.
+struct EmittedModules {
+  std::vector<std::uint32_t> symbols;
+  std::vector<std::uint32_t> begins{0};
+  std::vector<double> values;
 };
 
 /// What cpfg's expressions share while deriving: its global variables and
@@ -77,6 +102,10 @@ struct ExpressionScope {
 struct Variables {
   std::vector<double> globals;
   std::uint64_t random_state = 0x330E;
+  /// What the running Python body has produced so far.
+  EmittedModules emitted;
+  /// The derivation step being made, from 0 (L-Py's getIterationNb()).
+  int iteration = 0;
 };
 
 /// An arithmetic or logical expression compiled once into code for a small
@@ -177,10 +206,19 @@ class Expression {
     Jump,
     JumpIfZero,
     Select,
-    Func
+    Func,
+    Int,
+    RoundHalfEven,
+    Iteration,
+    EmitClear,
+    Emit,
+    Emitted
   };
   /// One instruction: `value` for Constant, `slot` for Parameter, Global,
   /// the stores, and the jump target; `offset` for the error position.
+  /// Emit appends the module `slot` with the `value` values on top of the
+  /// stack to Variables::emitted; EmitClear empties it; Emitted pushes
+  /// 1 when it holds modules (and checks that its brackets balance).
   struct Instruction {
     Op op = Op::Constant;
     std::uint32_t slot = 0;
@@ -238,13 +276,17 @@ inline constexpr std::string_view kProducedLocal = "produce";
 /// Compiles the Python body of an L-Py rule in bytes [begin, end), lines
 /// whose indentation makes the blocks: `name = e` (and `+=`, `-=`, `*=`,
 /// `/=`), `if c:` / `elif c:` / `else:` (a simple statement may follow the
-/// colon on its line), `pass`, and `produce …`, which sets the local
-/// kProducedLocal to its number and ends the body. `#` starts a comment.
-/// Expressions are Python's (ExpressionScope::python).
-/// @pre `scope.locals` is set.
+/// colon on its line), `for name in range(…):`, `while c:`, `pass`, and
+/// `produce …`, which sets the local kProducedLocal to its number and ends
+/// the body. With `scope.read_successor`, the body builds its successor:
+/// `nproduce …` appends modules, `produce …` appends its own, sets
+/// kProducedLocal to 1 and ends the body, and at the end kProducedLocal is
+/// 1 when anything was produced. `#` starts a comment. Expressions are
+/// Python's (ExpressionScope::python).
+/// @pre `scope.locals` is set, or `scope.globals` for a hook.
 /// @throws ParseError as parse_expression, for bad indentation, and at any
-///   other Python statement (`for`, `nproduce`, `return`, …), which lsolid
-///   does not run.
+///   other Python statement (`return`, `break`, `nproduce` where nothing
+///   reads a successor, …), which lsolid does not run.
 [[nodiscard]] Expression parse_python_statements(
     std::shared_ptr<const SourceFile> source, std::size_t begin,
     std::size_t end, const ExpressionScope& scope);
@@ -253,4 +295,9 @@ inline constexpr std::string_view kProducedLocal = "produce";
 /// its successor.
 [[nodiscard]] std::vector<std::pair<std::size_t, std::size_t>>
 python_successors(const SourceFile& source, std::size_t begin, std::size_t end);
+/// True when the L-Py rule body in bytes [begin, end) has an `nproduce`
+/// statement: it builds its successor as it runs
+/// (ExpressionScope::read_successor).
+[[nodiscard]] bool python_builds_successor(const SourceFile& source,
+                                           std::size_t begin, std::size_t end);
 }  // namespace lsys

@@ -126,6 +126,11 @@ struct Production {
   /// (random draws, globals), so that the body runs once per module, as
   /// in L-Py, and the next production's run draws the same numbers.
   bool undo_unless_applied = false;
+  /// An L-Py body that builds its successor as it runs (`nproduce`): the
+  /// modules it produced (Variables::emitted) replace `successor`, which
+  /// then holds every module the body may produce, as written, for the
+  /// grammar's analyses (its brackets need not balance).
+  bool successor_from_body = false;
   Successor successor;
   std::size_t offset = 0;  ///< byte offset of the production
 
@@ -150,6 +155,12 @@ struct Grammar {
   Alphabet alphabet;
   Successor axiom;
   std::size_t axiom_offset = 0;
+  /// L-Py's axiom written as Python (`Axiom:` above a body of `nproduce`
+  /// statements): run once with `axiom_local_count` locals before the
+  /// first step, its modules are the axiom, and `axiom` holds every module
+  /// it may produce, as Production::successor_from_body does.
+  std::optional<Expression> axiom_body;
+  int axiom_local_count = 0;
   /// Rewritten in parallel, one step per generation; first applicable wins,
   /// or a weighted choice when any has a probability.
   std::vector<Production> productions;

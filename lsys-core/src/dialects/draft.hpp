@@ -69,6 +69,10 @@ struct ProductionText {
   /// (parse_python_statements); rhs is that produce's successor.
   std::optional<Range> python_body;
   int python_branch = 0;
+  /// The body builds its successor as it runs (`nproduce`,
+  /// Production::successor_from_body): one production, rhs an empty
+  /// range.
+  bool python_builds = false;
 };
 
 /// A name of a `module` line, and the parameter count its list gives.
@@ -161,6 +165,8 @@ struct StatementBlock {
 struct Draft {
   std::optional<Range> axiom;
   std::vector<Range> axiom_more;  ///< indented lines that continue it
+  /// L-Py's axiom as a Python body of `nproduce` (Grammar::axiom_body).
+  std::optional<Range> axiom_python;
   std::vector<ProductionText> productions;
   std::vector<SettingText> settings;
   std::vector<std::pair<Range, Range>> defines;  ///< name, value
@@ -177,6 +183,9 @@ struct Draft {
   std::map<std::string, double> constants;
   /// Modules refused wherever they appear.
   std::vector<RefusedName> refused;
+  /// Modules that draw nothing in a solid and whose arguments are not read
+  /// (L-Py's label `@L("text")`), left out with a warning.
+  std::vector<RefusedName> left_out;
   /// Names among `defines` that statements assign (L-system Explorer's
   /// variables): global variables that start at their value, not
   /// constants.

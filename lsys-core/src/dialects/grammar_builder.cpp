@@ -85,6 +85,10 @@ class GrammarBuilder : TextScan {
     for (const RefusedName& refused : draft_.refused) {
       refused_.emplace_back(grammar_.alphabet.intern(refused.name), &refused);
     }
+    for (const RefusedName& left_out : draft_.left_out) {
+      left_out_.emplace(grammar_.alphabet.intern(left_out.name),
+                        LeftOut{&left_out});
+    }
     grammar_.warnings = draft_.warnings;
     grammar_.constants = draft_.constants;
     evaluate_defines();  // labels are told from conditions over constants
@@ -98,6 +102,15 @@ class GrammarBuilder : TextScan {
     for (const ProductionText& p : draft_.productions) read_production(p);
     reject_letter_settings_of_modules();
     build_commands();
+    for (const auto& [symbol, left_out] : left_out_) {
+      if (left_out.uses == 0) continue;
+      std::string warning = "'";
+      warning += left_out.name->name;
+      warning += "' (";
+      warning += left_out.name->what;
+      warning += ") is left out: it draws nothing in a solid";
+      grammar_.warnings.push_back(std::move(warning));
+    }
     note_variables();
     for (const std::string& name : given_defines_) {
       if (used_constants_.count(name) == 0 && !file_defines_.count(name)) {
@@ -337,12 +350,16 @@ class GrammarBuilder : TextScan {
   // number (L-system Explorer's `x = random()`) is drawn while deriving,
   // never once for the whole file.
   double constant(Range r) const {
-    const Expression e =
-        parse_expression(source_, r.begin, r.end,
-                         ExpressionScope{.constants = &grammar_.constants,
-                                         .used_constants = &used_constants_,
-                                         .radians = draft_.syntax.radians,
-                                         .mathjs = draft_.syntax.mathjs});
+    ExpressionScope scope{.constants = &grammar_.constants,
+                          .used_constants = &used_constants_,
+                          .radians = draft_.syntax.radians,
+                          .mathjs = draft_.syntax.mathjs};
+    if (draft_.syntax.python) {
+      scope.python = true;
+      scope.python_modules = &draft_.python_modules;
+      scope.python_functions = &draft_.python_functions;
+    }
+    const Expression e = parse_expression(source_, r.begin, r.end, scope);
     if (!e.is_constant()) {
       fail(r.begin,
            "a constant's value must be a number or arithmetic over numbers "
@@ -494,6 +511,13 @@ class GrammarBuilder : TextScan {
       i += length;
       std::size_t j = i;
       while (j < r.end && is_blank(text_[j])) ++j;
+      if (const auto it = left_out_.find(m.symbol); it != left_out_.end()) {
+        // Its arguments may be Python's strings: skipped, quotes and all.
+        ++it->second.uses;
+        if (j < r.end && text_[j] == '(') i = skip_arguments(j, r.end) + 1;
+        each(std::move(m));
+        continue;
+      }
       if (j < r.end && text_[j] == '(' && draft_.syntax.parameter_lists) {
         int depth = 0;
         std::size_t close = j;
@@ -516,6 +540,29 @@ class GrammarBuilder : TextScan {
       }
       each(std::move(m));
     }
+  }
+
+  // The `)` that closes the `(` at `open`, outside Python's strings.
+  std::size_t skip_arguments(std::size_t open, std::size_t end) const {
+    int depth = 0;
+    char quote = 0;
+    for (std::size_t k = open; k < end; ++k) {
+      const char c = text_[k];
+      if (quote != 0) {
+        if (c == '\\') {
+          ++k;
+        } else if (c == quote) {
+          quote = 0;
+        }
+      } else if (c == '\'' || c == '"') {
+        quote = c;
+      } else if (c == '(') {
+        ++depth;
+      } else if (c == ')' && --depth == 0) {
+        return k;
+      }
+    }
+    fail(open, "unclosed '('");
   }
 
   void reject_refused(SymbolId symbol, std::size_t offset) const {
@@ -698,6 +745,8 @@ class GrammarBuilder : TextScan {
     }
     if (text.python_body) {
       p.undo_unless_applied = true;
+      p.successor_from_body = text.python_builds;
+      if (text.python_builds) read_successors_into(scope, p.successor);
       p.before = parse_python_statements(source_, text.python_body->begin,
                                          text.python_body->end, scope);
       const auto produced =
@@ -707,7 +756,7 @@ class GrammarBuilder : TextScan {
           static_cast<std::uint32_t>(
               slots.size() +
               static_cast<std::size_t>(produced - locals.begin())),
-          text.python_branch);
+          text.python_builds ? 1 : text.python_branch);
     }
     std::vector<Range> rhs = text.rhs;
     if (text.probability) {
@@ -734,7 +783,7 @@ class GrammarBuilder : TextScan {
     std::string joined;
     for (const Range& r : rhs) joined += view(trim(r));
     if (joined == "*" || joined == "\u03B5") rhs.clear();
-    p.successor = modules(rhs, scope);
+    if (!p.successor_from_body) p.successor = modules(rhs, scope);
     p.local_count = static_cast<int>(locals.size());
     if (text.section != Section::Productions) {
       const char* what = text.section == Section::Decomposition
@@ -759,6 +808,33 @@ class GrammarBuilder : TextScan {
       default:
         grammar_.productions.push_back(std::move(p));
     }
+  }
+
+  // For a Python body that builds its successor: each `nproduce` or
+  // `produce` statement's modules, read as a successor is, go into `all`
+  // (Production::successor_from_body) and, as names and places of their
+  // arguments, to the statements' compiler.
+  void read_successors_into(ExpressionScope& scope, Successor& all) {
+    scope.read_successor = [this, &scope, &all](std::size_t begin,
+                                                std::size_t end) {
+      ExpressionScope arguments = scope;
+      arguments.read_successor = nullptr;
+      std::vector<SuccessorModuleText> out;
+      tokenize_each(Range{begin, end}, [&](RawModule&& raw) {
+        check_arity(raw.symbol, static_cast<int>(raw.arguments.size()),
+                    raw.offset);
+        std::vector<Expression> parameters;
+        SuccessorModuleText module{.symbol = raw.symbol, .offset = raw.offset};
+        for (const Range& arg : raw.arguments) {
+          parameters.push_back(
+              parse_expression(source_, arg.begin, arg.end, arguments));
+          module.arguments.emplace_back(arg.begin, arg.end);
+        }
+        all.push_back(raw.symbol, std::move(parameters), raw.offset);
+        out.push_back(std::move(module));
+      });
+      return out;
+    };
   }
 
   // cpfg's names and functions added to a scope.
@@ -816,9 +892,9 @@ class GrammarBuilder : TextScan {
   }
 
   void note_variables() {
-    bool uses = !grammar_.globals.empty() || grammar_.start ||
-                grammar_.start_each || grammar_.end_each || grammar_.end ||
-                grammar_.axiom.uses_variables();
+    bool uses = !grammar_.globals.empty() || grammar_.axiom_body ||
+                grammar_.start || grammar_.start_each || grammar_.end_each ||
+                grammar_.end || grammar_.axiom.uses_variables();
     for (const auto* list : {&grammar_.productions, &grammar_.decompositions,
                              &grammar_.homomorphisms}) {
       for (const Production& p : *list) {
@@ -831,6 +907,20 @@ class GrammarBuilder : TextScan {
   }
 
   void read_axiom() {
+    if (draft_.axiom_python) {
+      std::vector<std::string> locals;
+      ExpressionScope scope =
+          cpfg_scope(ExpressionScope{.constants = &grammar_.constants,
+                                     .used_constants = &used_constants_,
+                                     .radians = draft_.syntax.radians},
+                     &locals);
+      read_successors_into(scope, grammar_.axiom);
+      grammar_.axiom_body = parse_python_statements(
+          source_, draft_.axiom_python->begin, draft_.axiom_python->end, scope);
+      grammar_.axiom_local_count = static_cast<int>(locals.size());
+      grammar_.axiom_offset = draft_.axiom_python->begin;
+      return;
+    }
     if (!draft_.axiom) {
       fail(draft_.productions.empty()
                ? 0
@@ -1100,6 +1190,11 @@ class GrammarBuilder : TextScan {
   const ParseOptions& options_;
   Grammar grammar_;
   std::vector<SettingText> letter_settings_;  // `n=2`: one letter and `=`
+  struct LeftOut {
+    const RefusedName* name;
+    std::size_t uses = 0;
+  };
+  std::map<SymbolId, LeftOut> left_out_;
   std::unordered_map<SymbolId, TurtleCommand> aliases_;
   // The ids of the names the notation refuses, and why.
   std::vector<std::pair<SymbolId, const RefusedName*>> refused_;

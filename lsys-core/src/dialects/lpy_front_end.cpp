@@ -9,9 +9,11 @@
 // `maximum depth:`, `endlsystem`, `module`, `ignore:`/`consider:`, rules
 // `pred --> succ`) and, of the Python, the assignments of constants
 // (`angle = 30`, `extern(a=1)`) and the turtle's settings
-// (`context().turtle.setAngleIncrement(90)`). Any other Python, above all
-// a rule whose body is Python (`produce`, `if`), is refused at its line:
+// (`context().turtle.setAngleIncrement(90)`). Rule bodies, an axiom and
+// hooks written in Python are compiled from a subset of Python
+// (parse_python_statements); any other Python is refused at its line:
 // lsolid does not run Python.
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <utility>
@@ -19,6 +21,7 @@
 
 #include "dialects/front_ends.hpp"
 #include "dialects/grammar_builder.hpp"
+#include "lsys/surface.hpp"
 
 namespace lsys::dialects {
 namespace {
@@ -56,6 +59,9 @@ const std::vector<SymbolCommand> kSymbols = {
     {",", TurtleCommand::ColorPrevious, std::nullopt},
     {"SetColor", TurtleCommand::ColorNext, std::nullopt},
     {"%", TurtleCommand::Cut, std::nullopt},
+    // PlantGL's one predefined surface, its leaf, of the scale given
+    // (kLeaf).
+    {"~l", TurtleCommand::Surface, std::nullopt, 1},
     {"@v", TurtleCommand::RollToVertical, std::nullopt},
     {"@Ts", TurtleCommand::SetElasticity, std::nullopt},
     {"@Tp", TurtleCommand::SetTropism, std::nullopt},
@@ -78,7 +84,6 @@ const std::vector<SymbolCommand> kSymbols = {
 const std::vector<RefusedName> kRefused = {
     {"@B", "a box"},
     {"@b", "a quad"},
-    {"@L", "a label"},
     {"@M", "a move to a point"},
     {"@R", "setting the heading"},
     {"@h", "a roll to horizontal"},
@@ -86,7 +91,7 @@ const std::vector<RefusedName> kRefused = {
     {"@Di", "a scale"},
     {"@Dd", "a scale"},
     {"@g", "a PlantGL shape"},
-    {"~", "a predefined surface"},
+    {"~", "a predefined surface other than ~l, PlantGL's leaf"},
     {"nF", "a path of steps"},
     {"$", "a pattern module"},
     {"LineTo", "a line to a point"},
@@ -98,9 +103,30 @@ const std::vector<RefusedName> kRefused = {
     {"Sweep", "a swept surface"},
     {"SetGuide", "a guide curve"},
     {"SetContour", "a contour"},
-    {"Label", "a label"},
     {"?", "a query other than ?P, ?H, ?L, ?U"},
 };
+
+// Drawn as nothing, their arguments (Python's strings) unread.
+const std::vector<RefusedName> kLeftOut = {
+    {"@L", "a label"},
+    {"Label", "a label"},
+};
+
+// PlantGL's predefined surface `l` (its PglTurtle::defaultValue): a flat
+// hexagon 1 long along the heading and 0.5 wide, made of six triangles
+// about its centre. PlantGL places a surface's x along up, y along −left
+// and z along the heading; lsolid's Surface has x along left, y along the
+// heading.
+Surface plantgl_leaf() {
+  Surface leaf;
+  leaf.points = {{0.0, 0.5, 0.0},        {0.0, 0.0, 0.0},
+                 {0.25, 1.0 / 3.0, 0.0}, {0.25, 2.0 / 3.0, 0.0},
+                 {0.0, 1.0, 0.0},        {-0.25, 2.0 / 3.0, 0.0},
+                 {-0.25, 1.0 / 3.0, 0.0}};
+  leaf.triangles = {{0, 2, 1}, {0, 3, 2}, {0, 4, 3},
+                    {0, 5, 4}, {0, 6, 5}, {0, 1, 6}};
+  return leaf;
+}
 
 // Blanks `#` comments to the end of the line (outside strings), keeping
 // offsets.
@@ -152,6 +178,10 @@ class LpyReader : TextScan {
     // (materials and other calls there are the editor's, not the model's).
     for (const Range& line : lines(Range{end, text_.size()})) {
       const std::string_view text = view(trim(line));
+      if (text.starts_with("scalars = [") && text.ends_with("]")) {
+        read_scalars(trim(line));
+        continue;
+      }
       if (text.starts_with("context.turtle.set") &&
           (text.find("AngleIncrement(") != std::string_view::npos ||
            text.find("DefaultStep(") != std::string_view::npos ||
@@ -172,12 +202,20 @@ class LpyReader : TextScan {
     s.query_frame = QueryFrame::PlantGL;
     draft_.symbols = kSymbols;
     draft_.refused = kRefused;
+    draft_.left_out = kLeftOut;
     draft_.syntax.radians = true;
     draft_.syntax.python = true;
+    // PlantGL's turtle reads the parameters it knows and ignores the rest
+    // (L-Py's predefinedmodules.cpp: `-(a, t)` turns by a).
+    draft_.syntax.extra_turtle_parameters = true;
     draft_.warnings = std::move(grammar_warnings_);
     draft_.constants = {
         {"True", 1.0}, {"False", 0.0}, {"pi", 3.14159265358979323846}};
-    return build_grammar(*this, std::move(draft_), options_);
+    Grammar grammar = build_grammar(*this, std::move(draft_), options_);
+    if (const auto leaf = grammar.alphabet.find("~l")) {
+      grammar.surfaces[*leaf] = plantgl_leaf();
+    }
+    return grammar;
   }
 
  private:
@@ -231,10 +269,15 @@ class LpyReader : TextScan {
       }
     }
     if (!indented && starts_line(line, "axiom", &rest)) {
-      if (rest.empty()) {
-        refuse_python(line.begin, "an axiom built by Python statements");
+      if (draft_.axiom || draft_.axiom_python) {
+        fail(line.begin, "a second axiom");
       }
-      if (draft_.axiom) fail(line.begin, "a second axiom");
+      if (rest.empty()) {
+        // `Axiom:` above a Python body that produces the axiom.
+        axiom_at_ = line.begin;
+        body_ = Range{line.end, line.end};
+        return;
+      }
       draft_.axiom = rest;
       return;
     }
@@ -339,6 +382,19 @@ class LpyReader : TextScan {
     if (!body_) return;
     const Range body = *body_;
     body_.reset();
+    if (axiom_at_) {
+      const std::size_t at = *axiom_at_;
+      axiom_at_.reset();
+      if (trim(body).empty()) fail(at, "'Axiom:' without modules");
+      if (!python_builds_successor(*source_, body.begin, body.end) &&
+          python_successors(*source_, body.begin, body.end).empty()) {
+        refuse_python(at,
+                      "an axiom built by Python statements without "
+                      "'nproduce' or 'produce'");
+      }
+      draft_.axiom_python = body;
+      return;
+    }
     if (hook_) {
       draft_.blocks.push_back(StatementBlock{*hook_, body, true});
       hook_.reset();
@@ -357,6 +413,15 @@ class LpyReader : TextScan {
       function_->function.end = code.end;
       draft_.python_functions[function_->name] = function_->function;
       function_.reset();
+      return;
+    }
+    if (python_builds_successor(*source_, body.begin, body.end)) {
+      // One production whose body produces its successor as it runs.
+      ProductionText p{
+          head_, std::nullopt, {Range{body.end, body.end}}, section_};
+      p.python_body = body;
+      p.python_builds = true;
+      draft_.productions.push_back(std::move(p));
       return;
     }
     int branch = 0;
@@ -492,6 +557,47 @@ class LpyReader : TextScan {
     draft_.defines.emplace_back(name, trim(Range{equals + 1, line.end}));
   }
 
+  // The editor's scalars, `scalars = [('n', 'Integer', 3, 1, 20), …]` (or
+  // the older `('n', 3, 1, 20)`): constants, as L-Py sets them in the
+  // context before the file's code runs; the file's own assignment of the
+  // same name stays. Categories and other kinds are the editor's.
+  void read_scalars(Range line) {
+    const std::size_t open = view(line).find('[');
+    for (const Range& item :
+         split_top(Range{line.begin + open + 1, line.end - 1}, ',')) {
+      const Range tuple = trim(item);
+      if (tuple.empty() || text_[tuple.begin] != '(' ||
+          text_[tuple.end - 1] != ')') {
+        continue;
+      }
+      const auto fields = split_top(Range{tuple.begin + 1, tuple.end - 1}, ',');
+      const auto quoted = [&](Range r) {
+        r = trim(r);
+        return r.end - r.begin >= 2 &&
+               (text_[r.begin] == '\'' || text_[r.begin] == '"') &&
+               text_[r.end - 1] == text_[r.begin];
+      };
+      if (fields.size() < 2 || !quoted(fields[0])) continue;
+      const Range name_quoted = trim(fields[0]);
+      const Range name{name_quoted.begin + 1, name_quoted.end - 1};
+      std::size_t value_at = 1;
+      if (quoted(fields[1])) {
+        const std::string_view kind = view(trim(fields[1]));
+        if (kind != "'Integer'" && kind != "'Float'" && kind != "'Bool'" &&
+            kind != "\"Integer\"" && kind != "\"Float\"" &&
+            kind != "\"Bool\"") {
+          continue;
+        }
+        value_at = 2;
+      }
+      if (fields.size() <= value_at || !is_identifier(view(name))) continue;
+      const bool defined = std::any_of(
+          draft_.defines.begin(), draft_.defines.end(),
+          [&](const auto& d) { return view(d.first) == view(name); });
+      if (!defined) draft_.defines.emplace_back(name, trim(fields[value_at]));
+    }
+  }
+
   // context().turtle.setAngleIncrement(90) and its kin.
   void turtle_setting(Range line) {
     const std::string_view text = view(line);
@@ -518,7 +624,8 @@ class LpyReader : TextScan {
   // The rule whose Python body is being read: its head and body so far.
   Range head_;
   std::optional<Range> body_;
-  std::optional<BlockKind> hook_;  ///< when the body is a hook's
+  std::optional<std::size_t> axiom_at_;  ///< when the body is the axiom's
+  std::optional<BlockKind> hook_;        ///< when the body is a hook's
   struct PendingFunction {
     std::string name;
     std::string line;  ///< the `def` line, for the refusal

@@ -7,6 +7,7 @@
 #include "lsys/interpretation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <glm/geometric.hpp>
@@ -95,6 +96,21 @@ std::string number_text(double value) {
   return out;
 }
 
+// The commands that step the turtle, before which cpfg's movements act.
+bool is_step(TurtleCommand command) {
+  switch (command) {
+    case TurtleCommand::Draw:
+    case TurtleCommand::Move:
+    case TurtleCommand::DrawNoVertex:
+    case TurtleCommand::MoveNoVertex:
+    case TurtleCommand::DrawHalf:
+    case TurtleCommand::MoveHalf:
+      return true;
+    default:
+      return false;
+  }
+}
+
 bool is_color_index(double c) {
   return c >= 0.0 && c < static_cast<double>(kMaxColorIndex) + 1.0;
 }
@@ -164,6 +180,8 @@ struct TurtleState {
   double angle_deg = 45.0;
   glm::dvec3 tropism{0.0};
   double elasticity = 0.0;
+  // cpfg's movements' elasticities, which `]` restores with the rest.
+  std::array<double, kMaxMovements> movement_elasticity{};
   std::int32_t last_segment = -1;
   bool turns_swapped = false;  // Fractint's `!`
   double gravity = 0.2;        // Lparser's `t`, in radians
@@ -203,6 +221,10 @@ class Interpreter {
     state_.angle_deg = settings_.angle_deg;
     state_.tropism = settings_.tropism;
     state_.elasticity = settings_.elasticity;
+    for (std::size_t i = 0;
+         i < std::min(settings_.movements.size(), kMaxMovements); ++i) {
+      state_.movement_elasticity[i] = settings_.movements[i].elasticity;
+    }
     state_.contour_sides = settings_.contour_sides;
     buffers_.resize(static_cast<std::size_t>(settings_.maximum_depth) + 1);
     slot_buffers_.resize(buffers_.size());
@@ -647,9 +669,97 @@ class Interpreter {
                                      settings_.width_scale * generation);
   }
 
+  // cpfg's movements (movements.c, Mech 1994), before each step. The
+  // tropisms sum to one direction V = Σ e·cos γ·T + Σ e·sin γ·T × (H × T)
+  // / |H × T|, toward which the heading turns about H × V by |H × V|
+  // radians, at most 1. The torques sum to one direction D, and the turtle
+  // rolls about its heading, up toward D's part across the heading, by the
+  // sine of the angle between them times |D|, at most 1 radian. cpfg
+  // rebuilds up from the last step's frame (adjust_up_and_left), which
+  // forgets a roll made since; lsolid turns the whole frame, keeping it.
+  void adjust_for_movements() {
+    Turtle& turtle = state_.turtle;
+    const glm::dvec3 h = turtle.heading();
+    glm::dvec3 toward{0.0};
+    glm::dvec3 torque{0.0};
+    const std::size_t count =
+        std::min(settings_.movements.size(), kMaxMovements);
+    for (std::size_t i = 0; i < count; ++i) {
+      const Movement& m = settings_.movements[i];
+      const double e = state_.movement_elasticity[i];
+      if (e == 0.0) continue;
+      if (m.kind == Movement::Kind::Torque) {
+        torque += e * m.direction;
+        continue;
+      }
+      const SinCos sc = sin_cos_deg(m.angle_deg);
+      toward += e * sc.cos * m.direction;
+      if (sc.sin == 0.0) continue;
+      glm::dvec3 across = glm::cross(h, m.direction);
+      double length = glm::length(across);
+      if (length < 1e-7) {
+        // H along T: cpfg turns about left instead.
+        across = turtle.left();
+        length = 1.0;
+      }
+      toward += e * sc.sin / length * glm::cross(m.direction, across);
+    }
+    const double bend = glm::length(glm::cross(h, toward));
+    if (bend >= 1e-6) turtle.bend(toward * (std::min(bend, 1.0) / bend), 1.0);
+    if (torque == glm::dvec3(0.0)) return;
+    const glm::dvec3 heading = turtle.heading();
+    const glm::dvec3 d = glm::normalize(torque);
+    const glm::dvec3 side = glm::cross(heading, d);
+    if (glm::dot(side, side) <= 1e-8) return;
+    // D's part across the heading, as long as D.
+    const glm::dvec3 across = glm::cross(side, heading) * glm::length(torque);
+    const glm::dvec3 axis = glm::cross(turtle.up(), across);
+    const double sine = glm::length(axis);
+    if (sine < 1e-7) return;
+    const double angle = std::min(sine, 1.0) * 180.0 / std::numbers::pi;
+    // A roll turns about the heading, up toward −left: up turns toward D
+    // by a positive roll when up × D runs with the heading.
+    turtle.roll(glm::dot(axis, heading) > 0.0 ? angle : -angle);
+  }
+
+  // cpfg's tropism also bends after `f` and `g` (interpret.c's bend()).
+  void bend_after_move() {
+    if (settings_.bend_after_moves && state_.elasticity != 0.0) {
+      state_.turtle.bend(state_.tropism, state_.elasticity);
+    }
+  }
+
+  void change_movement(TurtleCommand command, std::span<const double> params) {
+    if (params.empty()) return;
+    const double index = params[0];
+    const std::size_t count =
+        std::min(settings_.movements.size(), kMaxMovements);
+    // cpfg ignores a movement it does not have ("Movement index out of
+    // range!"); the front end warns where the index is written.
+    if (!(index >= 1.0 && index < static_cast<double>(count) + 1.0)) return;
+    const auto i = static_cast<std::size_t>(index) - 1;
+    double& e = state_.movement_elasticity[i];
+    const double step =
+        params.size() > 1 ? params[1] : settings_.movements[i].elasticity_step;
+    switch (command) {
+      case TurtleCommand::MovementElasticity:
+        e = params.size() > 1 ? params[1] : 0.0;
+        break;
+      case TurtleCommand::MovementElasticityUp:
+        e += step;
+        break;
+      default:
+        e -= step;
+        break;
+    }
+  }
+
   void execute(TurtleCommand command, std::span<const double> params,
                std::uint32_t generation) {
     Turtle& turtle = state_.turtle;
+    if (!settings_.movements.empty() && is_step(command)) {
+      adjust_for_movements();
+    }
     switch (command) {
       case TurtleCommand::None:
       case TurtleCommand::Surface:  // drawn by interpret, which knows which
@@ -663,6 +773,7 @@ class Interpreter {
         if (!polygons_.empty()) {
           turtle.move(params.empty() ? state_.step : params[0]);
           add_vertex();
+          bend_after_move();
           return;
         }
         draw(params, generation);
@@ -700,10 +811,12 @@ class Interpreter {
         turtle.move(params.empty() ? state_.step : params[0]);
         state_.last_segment = -1;
         add_vertex();
+        bend_after_move();
         return;
       case TurtleCommand::MoveNoVertex:
         turtle.move(params.empty() ? state_.step : params[0]);
         state_.last_segment = -1;
+        bend_after_move();
         return;
       case TurtleCommand::TurnLeft:
         turtle.turn(state_.turns_swapped ? -angle(params) : angle(params));
@@ -881,6 +994,11 @@ class Interpreter {
         if (params.empty()) return;
         state_.tangent_factors = {params[0],
                                   params.size() > 1 ? params[1] : params[0]};
+        return;
+      case TurtleCommand::MovementElasticity:
+      case TurtleCommand::MovementElasticityUp:
+      case TurtleCommand::MovementElasticityDown:
+        change_movement(command, params);
         return;
       case TurtleCommand::ElasticityChange:
         state_.elasticity =

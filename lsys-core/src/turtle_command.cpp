@@ -69,6 +69,9 @@ int max_parameters(TurtleCommand command) noexcept {
     case TurtleCommand::QueryUp:
       return 3;
     case TurtleCommand::CylinderTangents:
+    case TurtleCommand::MovementElasticity:
+    case TurtleCommand::MovementElasticityUp:
+    case TurtleCommand::MovementElasticityDown:
       return 2;
     case TurtleCommand::CylinderRadiusTangents:
       return 4;

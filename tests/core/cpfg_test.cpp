@@ -230,6 +230,75 @@ TEST_F(CpfgFiles, BendsTowardTheTropismOnceTheUnderscoreGivesElasticity) {
   EXPECT_DOUBLE_EQ(interpret(read("bend.l")).segments[4].p1.x, 0.0);
 }
 
+glm::dvec3 direction_of(const Segment& s) {
+  return glm::normalize(s.p1 - s.p0);
+}
+
+// Mech's movements (cpfg's movements.c): before each step the heading turns
+// toward the tropism's direction by |H × e·T| radians.
+TEST_F(CpfgFiles, TurnsTowardATropismBeforeEachStepAsItsElasticitySays) {
+  write("t.l", "Lsystem: 1\nAxiom: FF[@Ts(1,0)F]F@Ti(1)F\nendlsystem\n");
+  write("t.v", "tropism: T: 1,0,0 E: 0.5 S: 0.25\n");
+  const Grammar g = read("t.l");
+  ASSERT_EQ(g.settings.movements.size(), 1U);
+  const Skeleton s = interpret(g);
+  ASSERT_EQ(s.segments.size(), 5U);
+  const auto angle_from_up = [&](std::size_t i) {
+    return std::acos(direction_of(s.segments[i]).z);
+  };
+  EXPECT_NEAR(angle_from_up(0), 0.5, 1e-12);
+  EXPECT_NEAR(direction_of(s.segments[0]).y, 0.0, 1e-12);
+  const double second = 0.5 + 0.5 * std::cos(0.5);
+  EXPECT_NEAR(angle_from_up(1), second, 1e-12);
+  EXPECT_NEAR(angle_from_up(2), second, 1e-12);          // elasticity 0 in [ ]
+  const double third = second + 0.5 * std::cos(second);  // `]` restored it
+  EXPECT_NEAR(angle_from_up(3), third, 1e-12);
+  EXPECT_NEAR(angle_from_up(4), third + 0.75 * std::cos(third), 1e-12);
+}
+
+// A = 90° is plagiotropism: the heading settles across the direction (here
+// cpfg's up, lsolid's +Z); along it, cpfg turns toward −left first.
+TEST_F(CpfgFiles, SettlesAcrossAPlagiotropismsDirection) {
+  write("p.l", "Lsystem: 1\nAxiom: FFFFFFFFFFFFFFFFFFFF\nendlsystem\n");
+  write("p.v", "tropism: T: 0 2 0 A: 90 E: 1\n");
+  const Skeleton s = interpret(read("p.l"));
+  ASSERT_EQ(s.segments.size(), 20U);
+  EXPECT_NEAR(direction_of(s.segments[0]).y, -std::sin(1.0), 1e-12);
+  EXPECT_NEAR(direction_of(s.segments[19]).z, 0.0, 1e-6);
+  EXPECT_NEAR(direction_of(s.segments[19]).y, -1.0, 1e-6);
+}
+
+// A torque rolls the turtle about its heading, up toward the direction:
+// the turn that follows shows the roll.
+TEST_F(CpfgFiles, RollsUpTowardATorquesDirection) {
+  write("r.l", "Lsystem: 1\nAxiom: F+(90)F\nendlsystem\n");
+  write("r.v", "torque: T: 1 0 0 E: 0.5\n");
+  const Skeleton s = interpret(read("r.l"));
+  ASSERT_EQ(s.segments.size(), 2U);
+  EXPECT_NEAR(glm::length(direction_of(s.segments[0]) - glm::dvec3(0, 0, 1)),
+              0.0, 1e-12);
+  EXPECT_NEAR(glm::length(direction_of(s.segments[1]) -
+                          glm::dvec3(-std::cos(0.5), -std::sin(0.5), 0.0)),
+              0.0, 1e-12);
+}
+
+TEST_F(CpfgFiles, RefusesAMovementItCannotReadAndWarnsOfOneNotDefined) {
+  write("m.l", "Lsystem: 1\nAxiom: F@Ts(2,1)F\nendlsystem\n");
+  write("m.v", "tropism: T: 0 1 0\n");
+  const Grammar g = read("m.l");
+  ASSERT_EQ(g.warnings.size(), 1U);
+  EXPECT_EQ(g.warnings[0],
+            "line 2: '@Ts' of movement 2, which the view file does not define "
+            "(it has 1 tropism: and torque: lines): ignored, as cpfg ignores "
+            "it");
+  write("m.v", "angle factor: 8\ntropism: T: 0 0 0 E: 1\n");
+  EXPECT_EQ(located_error_of([&] { (void)read("m.l"); }),
+            "2:10: a movement toward no direction (T: 0 0 0)");
+  write("m.v", "torque: T: 0 1 0 X: 3\n");
+  EXPECT_EQ(located_error_of([&] { (void)read("m.l"); }),
+            "1:18: unknown part 'X' of a movement: expected T, I, A, E or S");
+}
+
 TEST(Cpfg, DrawsNothingForTheEndOfASubLsystemOrAnApostrophe) {
   const Skeleton s =
       interpret(cpfg("Lsystem: 1\nAxiom: F$F'F@!(3)@Tx(1)\nendlsystem\n"));

@@ -22,6 +22,26 @@ enum class RollConvention { Lpfg, Cpfg };
 /// up, starting with left (0, −1, 0) where lsolid's is (−1, 0, 0)).
 enum class QueryFrame { Cpfg, PlantGL };
 
+/// One of cpfg's movements (Mech's model, 1994: the view file's `tropism:`
+/// and `torque:` lines), applied before each step `F`, `f`, `G`, `g`. A
+/// tropism bends the heading toward the direction at `angle_deg` from it
+/// (0: orthotropism, toward it; 90: plagiotropism, across it), by an angle
+/// that grows with the elasticity; a torque rolls the turtle about its
+/// heading, up toward the direction. docs/dialects/cpfg.md has the formulas.
+struct Movement {
+  enum class Kind { Tropism, Torque };
+  Kind kind = Kind::Tropism;
+  /// World coordinates (Z up), of length 1 unless an intensity scales it
+  /// (docs/dialects/cpfg.md).
+  glm::dvec3 direction{0.0, 0.0, 1.0};
+  double angle_deg = 0.0;
+  double elasticity = 0.0;       ///< at the start of each interpretation
+  double elasticity_step = 0.0;  ///< what `@Ti(i)` adds and `@Td(i)` takes
+};
+
+/// The most movements a file may define, as cpfg (MAXMOVEMENTS).
+inline constexpr std::size_t kMaxMovements = 10;
+
 /// A setting that lsys-core does not interpret but accepts on behalf of a
 /// client (the print settings of lsys-solid), with where its value stands.
 struct ExtraSetting {
@@ -68,6 +88,12 @@ struct Settings {
   double elasticity = 0.0;             ///< e; 0 turns tropism off
   /// What a bare cpfg `_` adds to e (cpfg's `elasticity increment`).
   double elasticity_increment = 0.0;
+  /// Whether tropism also bends after `f` and `g`, as cpfg's does (ABOP
+  /// bends after `F` only).
+  bool bend_after_moves = false;
+  /// cpfg's movements, at most kMaxMovements; `@Ts(i, e)`, `@Ti(i)` and
+  /// `@Td(i)` change the elasticity of movement i, counted from 1.
+  std::vector<Movement> movements;
   /// Points around a generalized cylinder's ring swept from a contour
   /// (cpfg's `contour sides`).
   int contour_sides = 8;

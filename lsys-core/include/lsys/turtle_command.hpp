@@ -47,6 +47,12 @@ enum class TurtleCommand {
   Gravity,         ///< Lparser `t`: pitch down by p × |horizontal heading|
   RollToVerticalSwappingTurns,  ///< Lparser `$`: `$`, then `+` `-` swapped
   ElasticityChange,  ///< cpfg `_`: set the elasticity, or add its increment
+  /// cpfg's movements (Settings::movements): `@Ts(i, e)` sets movement i's
+  /// elasticity to e (to 0 without e), `@Ti(i, d)` adds d (its step
+  /// without d), `@Td(i, d)` takes it away; without i, nothing.
+  MovementElasticity,
+  MovementElasticityUp,
+  MovementElasticityDown,
   Sphere,   ///< cpfg `@O(d)`: a ball of diameter d, or of the width, here
   Surface,  ///< cpfg `~l(s)`: draw a predefined surface (Grammar::surfaces)
   /// A disc of diameter d (or of the width) centred on the turtle, a leaf

@@ -19,6 +19,7 @@
 #include "dialects/cpfg_view.hpp"
 #include "dialects/front_ends.hpp"
 #include "lsys/diagnostic.hpp"
+#include "lsys/module_string.hpp"
 
 namespace lsys::dialects {
 namespace {
@@ -36,6 +37,10 @@ const std::vector<SymbolCommand> kSymbols = [] {
           {"_", TurtleCommand::ElasticityChange, std::nullopt, 1},
           // A sphere of the width, or of the diameter given.
           {"@O", TurtleCommand::Sphere, std::nullopt, 1},
+          // The elasticities of the view file's movements (blackbox.c).
+          {"@Ts", TurtleCommand::MovementElasticity, std::nullopt, 2},
+          {"@Ti", TurtleCommand::MovementElasticityUp, std::nullopt, 2},
+          {"@Td", TurtleCommand::MovementElasticityDown, std::nullopt, 2},
           // Generalized cylinders, with round cross-sections (general.c).
           {"@Gs", TurtleCommand::CylinderStart, std::nullopt, 0},
           {"@Gc", TurtleCommand::CylinderPoint, std::nullopt, 1},
@@ -80,9 +85,6 @@ const std::vector<RefusedName> kRefused = {
     {"@PS", "a bicubic patch"},
     {"@PC", "a bicubic patch"},
     {"@PD", "a bicubic patch"},
-    {"@Ts", "the newer tropism model"},
-    {"@Ti", "the newer tropism model"},
-    {"@Td", "the newer tropism model"},
     {"~", "a predefined surface that no surface: line of the view names"},
     {"?E",
      "a query of the environment, which needs cpfg's environment "
@@ -137,6 +139,11 @@ Draft notation(const CpfgView& view) {
     s.tropism = glm::dvec3(t.x, -t.z, t.y);
   }
   s.elasticity = view.elasticity.value_or(0.0);
+  s.bend_after_moves = true;
+  for (Movement m : view.movements) {
+    m.direction = glm::dvec3(m.direction.x, -m.direction.z, m.direction.y);
+    s.movements.push_back(m);
+  }
   s.elasticity_increment = view.elasticity_increment.value_or(0.0);
   s.contour_sides = view.contour_sides.value_or(8);
   s.twist_cylinders = view.twist_cylinders.value_or(false);
@@ -162,6 +169,42 @@ void drop_probabilities_without_seed(Grammar& grammar) {
     grammar.warnings.emplace_back(
         "probabilities without 'seed:' are ignored, as cpfg ignores them: "
         "the first applicable production is taken");
+  }
+}
+
+// cpfg ignores `@Ts(i, …)` of a movement its view file does not define
+// ("Movement index out of range!"), and so does lsolid: say so where a
+// constant index shows it.
+void warn_of_missing_movements(Grammar& grammar) {
+  const double count = static_cast<double>(grammar.settings.movements.size());
+  const auto check = [&](const Successor& successor) {
+    for (std::size_t i = 0; i < successor.size(); ++i) {
+      const TurtleCommand c = grammar.commands[successor.symbols()[i]];
+      if (c != TurtleCommand::MovementElasticity &&
+          c != TurtleCommand::MovementElasticityUp &&
+          c != TurtleCommand::MovementElasticityDown) {
+        continue;
+      }
+      const auto parameters = successor.parameters(i);
+      if (parameters.empty() || !parameters[0].is_constant()) continue;
+      const double index = parameters[0].constant_value();
+      if (index >= 1.0 && index < count + 1.0) continue;
+      const SourceLocation at = grammar.source->location(successor.offset(i));
+      std::string warning = "line " + std::to_string(at.line) + ": '" +
+                            grammar.alphabet.name(successor.symbols()[i]) +
+                            "' of movement ";
+      append_number(warning, index);
+      warning += ", which the view file does not define (it has ";
+      warning += std::to_string(grammar.settings.movements.size());
+      warning += " tropism: and torque: lines): ignored, as cpfg ignores it";
+      grammar.warnings.push_back(std::move(warning));
+      return;
+    }
+  };
+  check(grammar.axiom);
+  for (const auto* list : {&grammar.productions, &grammar.decompositions,
+                           &grammar.homomorphisms}) {
+    for (const Production& p : *list) check(p.successor);
   }
 }
 
@@ -281,6 +324,7 @@ Grammar read_cpfg(std::shared_ptr<const SourceFile> source,
       "cpfg's '{(n)' (a generalized cylinder) is not supported; write '{' "
       "for a polygon");
   drop_probabilities_without_seed(grammar);
+  warn_of_missing_movements(grammar);
   return grammar;
 }
 

@@ -13,6 +13,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <string_view>
 
 #include "dialects/c_preprocessor.hpp"
@@ -120,6 +121,72 @@ class ViewReader {
     while (i < end && text_[i] != ' ' && text_[i] != '\t' && text_[i] != '\r')
       ++i;
     return text_.substr(at, i - at);
+  }
+
+  // A `tropism:` or `torque:` line, read as cpfg's read_movement: letters
+  // each followed by numbers, `T: x y z` the direction, `I: i` its
+  // intensity (the direction becomes i / |T| times itself, that factor at
+  // most 1 either way), `A: a` the angle to it in degrees, `E: e` the
+  // elasticity, `S: s` its step. cpfg ignores a movement that it cannot
+  // read, or of no direction or intensity; lsolid stops there.
+  void movement(std::size_t i, std::size_t end, Movement::Kind kind) {
+    const std::size_t start = i;
+    Movement m{.kind = kind};
+    bool has_direction = false;
+    double scale = 0.0;
+    for (;;) {
+      while (i < end &&
+             (text_[i] == ' ' || text_[i] == '\t' || text_[i] == ',' ||
+              text_[i] == ':' || text_[i] == '\r')) {
+        ++i;
+      }
+      if (i == end) break;
+      const std::size_t at = i;
+      const char letter = text_[i];
+      while (i < end && std::isalpha(static_cast<unsigned char>(text_[i]))) ++i;
+      const auto next = [&] {
+        while (i < end && text_[i] == ':') ++i;
+        return number(i, end);
+      };
+      switch (letter) {
+        case 'T': {
+          m.direction.x = next();
+          m.direction.y = next();
+          m.direction.z = next();
+          const double length = std::sqrt(glm::dot(m.direction, m.direction));
+          if (length == 0.0)
+            fail(at, "a movement toward no direction (T: 0 0 0)");
+          scale = 1.0 / length;
+          has_direction = true;
+          break;
+        }
+        case 'I':
+          scale = std::clamp(scale * next(), -1.0, 1.0);
+          if (scale == 0.0)
+            fail(at, "a movement of intensity 0, or 'I' before 'T'");
+          break;
+        case 'A':
+          m.angle_deg = next();
+          break;
+        case 'E':
+          m.elasticity = next();
+          break;
+        case 'S':
+          m.elasticity_step = next();
+          break;
+        default:
+          fail(at, std::string("unknown part '") + letter +
+                       "' of a movement: expected T, I, A, E or S");
+      }
+    }
+    if (!has_direction)
+      fail(start, "a movement without its direction (T: x y z)");
+    m.direction *= scale;
+    if (view_.movements.size() == kMaxMovements) {
+      warn(start, "more than 10 movements: cpfg ignores the 11th and later");
+      return;
+    }
+    view_.movements.push_back(m);
   }
 
   static std::optional<CpfgLineStyle> style_named(std::string_view w) {
@@ -248,11 +315,14 @@ class ViewReader {
       } else {
         view_.function_set = std::string(file);
       }
-    } else if (label == "tropism" || label == "torque" || label == "curve" ||
-               label == "scale multiplier" ||
+    } else if (label == "tropism" || label == "torque") {
+      movement(v, end,
+               label == "tropism" ? Movement::Kind::Tropism
+                                  : Movement::Kind::Torque);
+    } else if (label == "curve" || label == "scale multiplier" ||
                label == "interpretation past %") {
-      // What uses them (`@Ts`, curveX, `@Di`) is refused where the
-      // L-system writes it.
+      // What uses them (curveX, `@Di`) is refused where the L-system
+      // writes it.
     } else {
       for (std::string_view known : kViewOnly) {
         if (label == known) return;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "lsys/contour.hpp"
+#include "lsys/settings.hpp"
 #include "lsys/source.hpp"
 
 namespace lsys::dialects {
@@ -28,6 +29,9 @@ struct CpfgView {
   std::optional<glm::dvec3> tropism_direction;  ///< in cpfg's frame, Y up
   std::optional<double> elasticity;             ///< `initial elasticity`
   std::optional<double> elasticity_increment;
+  /// `tropism:` and `torque:` lines in order (`@Ts(1, e)` is the first);
+  /// directions in cpfg's frame, Y up, scaled by their intensity.
+  std::vector<Movement> movements;
   /// A `surface:` line: `~id` draws the file, `size` model units for its
   /// SIZE, meshed s × t per patch (0: the file's own).
   struct SurfaceLine {

@@ -164,6 +164,8 @@ class Derivation::Impl {
              count_text(static_cast<double>(options_.max_modules)) +
              " modules (--max-modules)");
     }
+    // A bound is no count: the interpreter counts what it draws instead.
+    if (!costs_.is_exact()) return;
     if (segment_weight_.empty())
       segment_weight_.resize(grammar_.alphabet.size(), -1.0);
     double& weight = segment_weight_[symbol];

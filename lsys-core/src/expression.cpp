@@ -17,6 +17,7 @@
 
 #include "lsys/alphabet.hpp"
 #include "lsys/diagnostic.hpp"
+#include "lsys/module_string.hpp"
 
 namespace lsys {
 namespace {
@@ -83,6 +84,8 @@ int arity(Op op) {
     case Op::Negate:
     case Op::Not:
     case Op::Func:
+    case Op::CheckIndex:
+    case Op::GlobalAt:
       return 1;
     default:
       break;
@@ -415,7 +418,9 @@ class Compiler {
   int fold(int index) {
     Node& node = nodes_[static_cast<std::size_t>(index)];
     if (is_random(node.instruction.op) ||
-        node.instruction.op == Op::Iteration) {
+        node.instruction.op == Op::Iteration ||
+        node.instruction.op == Op::CheckIndex ||
+        node.instruction.op == Op::GlobalAt) {
       return index;
     }
     const auto is_const = [&](int i) {
@@ -717,6 +722,13 @@ class Compiler {
     }
     skip_space();
     if (pos_ < text_.size() && text_[pos_] == '(') return parse_call(name, at);
+    if (const ArrayVariable* array = array_named(name)) {
+      const int index = parse_subscripts(*array, at);
+      const int node = add(Op::GlobalAt, at, index);
+      nodes_.back().instruction.slot = array->first;
+      nodes_.back().instruction.value = element_count(*array);
+      return node;
+    }
     if (!frames_.empty()) {
       // Inside a Python function: its parameters, then what is global; not
       // the calling rule's parameters and locals.
@@ -943,6 +955,50 @@ class Compiler {
     if (node.b >= 0) depth = std::max(depth, 1 + emit(node.b, code));
     code.push_back(node.instruction);
     return depth;
+  }
+
+  static double element_count(const ArrayVariable& array) {
+    double n = 1.0;
+    for (const std::uint32_t d : array.dimensions) n *= d;
+    return n;
+  }
+
+  const ArrayVariable* array_named(std::string_view name) const {
+    if (scope_.arrays == nullptr) return nullptr;
+    for (const ArrayVariable& a : *scope_.arrays) {
+      if (a.name == name) return &a;
+    }
+    return nullptr;
+  }
+
+  // `[i][j]…` after an array's name at pos_: the offset of the element,
+  // as cpfg's generate.c computes it, each subscript checked against its
+  // dimension (cpfg clamps one out of range, with a warning; lsolid stops).
+  int parse_subscripts(const ArrayVariable& array, std::size_t at) {
+    int index = -1;
+    for (const std::uint32_t dimension : array.dimensions) {
+      skip_space();
+      if (!accept("[")) {
+        fail(pos_,
+             "'" + array.name + "' is an array of " +
+                 std::to_string(array.dimensions.size()) +
+                 (array.dimensions.size() == 1 ? " dimension" : " dimensions") +
+                 ": expected '['");
+      }
+      const std::size_t subscript_at = pos_;
+      const int subscript = parse_conditional();
+      if (!accept("]")) fail(pos_, "expected ']'");
+      const int checked = add(Op::CheckIndex, subscript_at, subscript);
+      nodes_.back().instruction.value = dimension;
+      if (index < 0) {
+        index = checked;
+        continue;
+      }
+      const int size = add(Op::Constant, at);
+      nodes_.back().instruction.value = dimension;
+      index = add(Op::Add, at, add(Op::Multiply, at, index, size), checked);
+    }
+    return index;
   }
 
   std::optional<std::uint32_t> local_slot(const std::string& name) const {
@@ -1628,6 +1684,26 @@ class Compiler {
         expect_semicolon();
         return;
       }
+      if (const ArrayVariable* array = array_named(word);
+          array != nullptr && after < text_.size() && text_[after] == '[') {
+        // `a[i][j] = e;`: the element's offset, then the value.
+        pos_ += word.size();
+        nodes_.clear();
+        const int index_depth = emit(parse_subscripts(*array, at), code);
+        skip_space();
+        if (!accept("=") || (pos_ < text_.size() && text_[pos_] == '=')) {
+          fail(pos_, "expected '=' after an array's element");
+        }
+        nodes_.clear();
+        const int value_depth = emit(parse_conditional(), code);
+        depth_ = std::max({depth_, index_depth, 1 + value_depth});
+        code.push_back(Instruction{.op = Op::StoreGlobalAt,
+                                   .slot = array->first,
+                                   .value = element_count(*array),
+                                   .offset = at});
+        expect_semicolon();
+        return;
+      }
     }
     expression_into(code);
     code.push_back(Instruction{.op = Op::Pop, .offset = at});
@@ -1753,6 +1829,15 @@ double Expression::run(const double* read, double* write,
   const auto at = [&](int i) -> double& {
     return stack[static_cast<std::size_t>(i)];
   };
+  // The global slot of an array's element; fractional subscripts (which
+  // cpfg allows) could otherwise reach past the array.
+  const auto element = [&](const Instruction& in, double offset) {
+    if (!(offset >= 0.0 && offset < in.value)) {
+      throw error_at(*source_, in.offset,
+                     "fractional subscripts reach past the end of the array");
+    }
+    return in.slot + static_cast<std::size_t>(offset);
+  };
   std::size_t pc = 0;
   while (pc < code_.size()) {
     const Instruction& in = code_[pc++];
@@ -1772,6 +1857,27 @@ double Expression::run(const double* read, double* write,
       case Op::StoreGlobal:
         need_variables(in).globals[in.slot] = at(top--);
         break;
+      case Op::CheckIndex: {
+        const double i = at(top);
+        if (!(i >= 0.0 && i < in.value)) {
+          std::string what = "subscript ";
+          append_number(what, i);
+          what += " is out of range: this dimension of the array has ";
+          append_number(what, in.value);
+          what += " elements, 0 to ";
+          append_number(what, in.value - 1.0);
+          throw error_at(*source_, in.offset, what);
+        }
+        break;
+      }
+      case Op::GlobalAt:
+        at(top) = need_variables(in).globals[element(in, at(top))];
+        break;
+      case Op::StoreGlobalAt: {
+        const double value = at(top--);
+        need_variables(in).globals[element(in, at(top--))] = value;
+        break;
+      }
       case Op::Pop:
         --top;
         break;
@@ -1898,6 +2004,7 @@ bool calls_functions(const std::vector<Expression::Instruction>& code) {
 bool touches_variables(const std::vector<Expression::Instruction>& code) {
   return std::any_of(code.begin(), code.end(), [](const auto& in) {
     return in.op == Op::Global || in.op == Op::StoreGlobal ||
+           in.op == Op::GlobalAt || in.op == Op::StoreGlobalAt ||
            in.op == Op::EmitClear || in.op == Op::Emit ||
            in.op == Op::Emitted || in.op == Op::Iteration || is_random(in.op);
   });

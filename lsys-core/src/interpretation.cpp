@@ -242,6 +242,13 @@ class Interpreter {
     on_limit_ = std::move(on_limit);
   }
 
+  // The segments drawn, counted here where the derivation could only bound
+  // them (a conditional homomorphism); `on_limit` throws past `most`.
+  void limit_segments(std::uint64_t most, std::function<void()> on_limit) {
+    max_segments_ = most;
+    on_segment_limit_ = std::move(on_limit);
+  }
+
   void run(const ModuleString& modules) {
     for (std::size_t i = 0; i < modules.size(); ++i) {
       interpret(modules.symbol(i), modules.parameters(i), modules.generation(i),
@@ -312,6 +319,7 @@ class Interpreter {
       }
     }
     if (++modules_read_ > max_modules_) on_limit_();
+    if (skeleton_.segments.size() > max_segments_) on_segment_limit_();
     if (symbol < grammar_.parameters_read.size() &&
         grammar_.parameters_read[symbol] &&
         params.size() >
@@ -352,6 +360,70 @@ class Interpreter {
       default:
         return frame(t.position());
     }
+  }
+
+  // A point or direction given in the notation's coordinates (answer's
+  // inverse), a missing z being 0.
+  glm::dvec3 from_frame(std::span<const double> p) const {
+    const double a = p[0];
+    const double b = p[1];
+    const double c = p.size() > 2 ? p[2] : 0.0;
+    return settings_.query_frame == QueryFrame::PlantGL ? glm::dvec3(b, -a, c)
+                                                        : glm::dvec3(a, -c, b);
+  }
+
+  // cpfg's `@R` (blackbox.c): a zero heading is cpfg's up; an up that is
+  // zero or not exactly across the heading leaves up to the least
+  // rotation. PlantGL's setHead keeps the part of up across the heading.
+  void set_heading(std::span<const double> params) {
+    Turtle& turtle = state_.turtle;
+    glm::dvec3 h =
+        from_frame(params.first(std::min<std::size_t>(3, params.size())));
+    const bool plantgl = settings_.query_frame == QueryFrame::PlantGL;
+    if (h == glm::dvec3(0.0)) {
+      if (plantgl) return;
+      h = glm::dvec3(0.0, 0.0, 1.0);
+    }
+    if (params.size() < 6) {
+      turtle.set_heading(h);
+      return;
+    }
+    const glm::dvec3 u = from_frame(params.subspan(3, 3));
+    if (plantgl) {
+      turtle.set_heading_and_up(h, u);
+    } else if (u != glm::dvec3(0.0) && glm::dot(u, h) == 0.0) {
+      turtle.set_heading_and_up(h, -u);  // cpfg's up is lsolid's −up
+    } else {
+      turtle.set_heading(h);
+    }
+  }
+
+  // PlantGL's lineTo: a segment straight to the point, of end radius r
+  // when given; the frame stays as it was.
+  void line_to(std::span<const double> params, std::uint32_t generation) {
+    Turtle& turtle = state_.turtle;
+    const glm::dvec3 p0 = turtle.position();
+    turtle.set_position(from_frame(params.first(3)));
+    check_finite();
+    if (!polygons_.empty()) {
+      add_vertex();
+      return;
+    }
+    const double start = generation_width(state_.width, generation);
+    if (params.size() > 3 && params[3] >= 0.0) {
+      state_.width = params[3] * settings_.width_scale;
+    }
+    if (glm::length(turtle.position() - p0) <=
+        kShortestMove * std::max(1.0, glm::length(p0))) {
+      ++skeleton_.zero_length_segments;
+      return;
+    }
+    skeleton_.segments.push_back(
+        Segment{p0, turtle.position(), start,
+                generation_width(state_.width, generation), state_.color,
+                state_.last_segment});
+    state_.last_segment =
+        static_cast<std::int32_t>(skeleton_.segments.size() - 1);
   }
 
   // cpfg's `~l(sx, sy, sz)` (one scale for all, or none for 1): the
@@ -1000,6 +1072,18 @@ class Interpreter {
       case TurtleCommand::MovementElasticityDown:
         change_movement(command, params);
         return;
+      case TurtleCommand::SetHeading:
+        set_heading(params);
+        return;
+      case TurtleCommand::MoveTo:
+        turtle.set_position(
+            from_frame(params.first(std::min<std::size_t>(3, params.size()))));
+        check_finite();
+        state_.last_segment = -1;
+        return;
+      case TurtleCommand::LineTo:
+        line_to(params, generation);
+        return;
       case TurtleCommand::ElasticityChange:
         state_.elasticity =
             params.empty() ? state_.elasticity + settings_.elasticity_increment
@@ -1184,6 +1268,8 @@ class Interpreter {
   Variables* variables_ = nullptr;
   std::uint64_t max_modules_ = std::numeric_limits<std::uint64_t>::max();
   std::function<void()> on_limit_;
+  std::uint64_t max_segments_ = std::numeric_limits<std::uint64_t>::max();
+  std::function<void()> on_segment_limit_;
   std::vector<Ring> rings_;
   std::map<std::pair<const Contour*, int>, std::vector<glm::dvec2>>
       sampled_contours_;
@@ -1214,6 +1300,13 @@ Skeleton interpret(const Grammar& grammar, const DerivationOptions& derivation,
         "makes the turtle read more than " +
             count_text(static_cast<double>(derivation.max_modules)) +
             " modules after the homomorphism (--max-modules)");
+  });
+  interpreter.limit_segments(derivation.max_segments, [&] {
+    throw limit_error(
+        grammar, derivation, n,
+        "draws more than the limit of " +
+            count_text(static_cast<double>(derivation.max_segments)) +
+            " segments (--max-segments)");
   });
   if (d.prediction()) {
     interpreter.reserve(static_cast<std::size_t>(

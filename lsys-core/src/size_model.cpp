@@ -182,7 +182,17 @@ InterpretationCosts::InterpretationCosts(const Grammar& grammar,
                                          bool is_lower_bound)
     : grammar_(grammar),
       homomorphisms_(grammar.homomorphisms, grammar.alphabet.size()),
-      is_lower_bound_(is_lower_bound) {}
+      is_lower_bound_(is_lower_bound) {
+  std::map<SymbolId, int> arity;
+  for (const Production& p : grammar.homomorphisms) {
+    const auto [it, first] =
+        arity.emplace(p.predecessor.symbol, p.predecessor.parameter_count);
+    if (p.condition || p.probability ||
+        (!first && it->second != p.predecessor.parameter_count)) {
+      is_exact_ = false;
+    }
+  }
+}
 
 InterpretationCost InterpretationCosts::cost(SymbolId symbol, int arity,
                                              int depth) {

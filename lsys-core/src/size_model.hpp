@@ -32,11 +32,17 @@ class InterpretationCosts {
                                         int depth = 0);
   /// The largest segment count over the arities a module can have.
   [[nodiscard]] double segments_any_arity(SymbolId symbol);
+  /// True when each cost is exact: no homomorphism rule has a condition or
+  /// a probability, and each module's rules share one arity. Otherwise a
+  /// cost is only a bound (a recursive homomorphism whose conditions end
+  /// its recursion early may draw far less than its bound).
+  [[nodiscard]] bool is_exact() const noexcept { return is_exact_; }
 
  private:
   const Grammar& grammar_;
   RuleIndex homomorphisms_;
   bool is_lower_bound_;
+  bool is_exact_ = true;
   std::map<std::tuple<SymbolId, int, int>, InterpretationCost> memo_;
 };
 

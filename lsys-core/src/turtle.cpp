@@ -66,6 +66,45 @@ void Turtle::bend(const glm::dvec3& tropism, double elasticity) noexcept {
   orthonormalize();
 }
 
+void Turtle::set_heading(const glm::dvec3& heading) noexcept {
+  const double length = glm::length(heading);
+  if (!(length > 0.0) || !std::isfinite(length)) return;
+  const glm::dvec3 h = heading / length;
+  const glm::dvec3 axis = glm::cross(heading_, h);
+  const double s = glm::length(axis);
+  const double c = glm::dot(heading_, h);
+  if (s < 1e-12) {
+    // Along H already, or against it: a half turn about up.
+    if (c < 0.0) turn_around();
+    return;
+  }
+  const glm::dvec3 k = axis / s;
+  const auto spin = [&](const glm::dvec3& v) {
+    return v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1.0 - c);
+  };
+  heading_ = h;
+  left_ = spin(left_);
+  up_ = spin(up_);
+  orthonormalize();
+}
+
+void Turtle::set_heading_and_up(const glm::dvec3& heading,
+                                const glm::dvec3& up) noexcept {
+  const double length = glm::length(heading);
+  if (!(length > 0.0) || !std::isfinite(length)) return;
+  const glm::dvec3 h = heading / length;
+  const glm::dvec3 across = up - glm::dot(up, h) * h;
+  const double a = glm::length(across);
+  if (!(a > 1e-12 * std::max(1.0, glm::length(up))) || !std::isfinite(a)) {
+    set_heading(h);
+    return;
+  }
+  heading_ = h;
+  up_ = across / a;
+  left_ = glm::cross(up_, heading_);  // so that H × L = U
+  orthonormalize();
+}
+
 void Turtle::orthonormalize() noexcept {
   rotations_since_orthonormalize_ = 0;
   heading_ = glm::normalize(heading_);

@@ -61,6 +61,11 @@ int max_parameters(TurtleCommand command) noexcept {
     case TurtleCommand::Draw:
     case TurtleCommand::DrawNoVertex:
       return 2;
+    case TurtleCommand::SetHeading:
+      return 6;
+    case TurtleCommand::LineTo:
+      return 4;
+    case TurtleCommand::MoveTo:
     case TurtleCommand::SetTropism:
     case TurtleCommand::Surface:
     case TurtleCommand::QueryPosition:
@@ -95,7 +100,11 @@ int max_parameters(TurtleCommand command) noexcept {
 int min_parameters(TurtleCommand command) noexcept {
   switch (command) {
     case TurtleCommand::SetTropism:
+    case TurtleCommand::LineTo:
       return 3;
+    case TurtleCommand::SetHeading:
+    case TurtleCommand::MoveTo:
+      return 2;
     case TurtleCommand::SetElasticity:
     case TurtleCommand::CylinderTangents:
       return 1;

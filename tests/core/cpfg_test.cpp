@@ -424,13 +424,60 @@ TEST(Cpfg, AnswersQueriesWithThePositionAndFrameBeforeEachStep) {
             "B ?P(0,5,0)");
 }
 
-TEST(Cpfg, RefusesArraysAndRingLsystemsAtTheirPlace) {
-  EXPECT_EQ(cpfg_error("Lsystem: 1\ndefine: { array a[2] = {1, 2}; }\n"
-                       "Axiom: F\n"),
-            "2:1: cpfg's arrays (a define: block) are not supported");
+TEST(Cpfg, RefusesRingLsystemsAtTheirPlace) {
   EXPECT_EQ(cpfg_error("Lsystem: 1\nring lsystem\nAxiom: F\n"),
             "2:1: a ring L-system (contexts that wrap around the string) is "
             "not supported");
+}
+
+// cpfg's `define:` block (lsys_input.y): arrays of global variables, row by
+// row, which expressions index and statements assign.
+TEST(Cpfg, ReadsTheArraysOfADefineBlock) {
+  const Grammar g = cpfg(
+      "Lsystem: 1\nderivation length: 1\n"
+      "define: { array a[3] = {1, 2, 3}, m[2][3] =\n"
+      "    {1, 2, 3, 4, 5, 6};\n  array z[2]; }\n"
+      "Start: {a[0] = a[2] * 10; m[1][0] = m[0][1] + z[1];}\n"
+      "Axiom: A(1)\nA(i) --> F(a[i])F(m[1][i+1])F(a[0])F(m[1][0])F(m[1.5][0])\n"
+      "endlsystem\n");
+  EXPECT_EQ(to_string(derive(g), g.alphabet), "F(2)F(6)F(30)F(2)F(5)");
+  EXPECT_EQ(g.warnings.size(), 1U);  // no view file
+  const Grammar few =
+      cpfg("Lsystem: 1\ndefine: { array a[3] = {1}; }\nAxiom: F(a[2])\n");
+  EXPECT_EQ(to_string(derive(few), few.alphabet), "F(0)");
+  EXPECT_EQ(few.warnings.back(),
+            "line 2: array 'a' of 3 elements is given 1 values: the rest are "
+            "0, as in cpfg");
+  EXPECT_EQ(located_error_of([] {
+              (void)derive(
+                  cpfg("Lsystem: 1\ndefine: { array a[3]; }\n"
+                       "Axiom: A(3)\nA(i) --> F(a[i])\n"));
+            }),
+            "4:14: subscript 3 is out of range: this dimension of the array "
+            "has 3 elements, 0 to 2");
+  EXPECT_EQ(cpfg_error("Lsystem: 1\ndefine: { array a[3]; }\nAxiom: F(a)\n"),
+            "3:11: 'a' is an array of 1 dimension: expected '['");
+  EXPECT_EQ(cpfg_error("Lsystem: 1\ndefine: { array a[0]; }\nAxiom: F\n"),
+            "2:19: an array's dimension must be a whole number, at least 1");
+  EXPECT_EQ(cpfg_error("Lsystem: 1\ndefine: { x = 1; }\nAxiom: F\n"),
+            "2:11: expected 'array' in a define: block");
+}
+
+// `@R` and `@M` (blackbox.c) in cpfg's Y-up coordinates; cpfg's up is
+// lsolid's −up. A label `@L` draws nothing and is left out.
+TEST(Cpfg, SetsTheHeadingAndThePositionOutright) {
+  const Skeleton s = interpret(
+      cpfg("Lsystem: 1\nAxiom: @M(1,2,3)F@R(1,0,0)F@R(1,0,0,0,1,0)+(90)F"
+           "@L(\"%.f\", 2)\nendlsystem\n"));
+  ASSERT_EQ(s.segments.size(), 3U);
+  EXPECT_EQ(s.segments[0].p0, glm::dvec3(1.0, -3.0, 2.0));
+  EXPECT_NEAR(glm::length(direction_of(s.segments[1]) - glm::dvec3(1, 0, 0)),
+              0.0, 1e-12);
+  EXPECT_NEAR(glm::length(direction_of(s.segments[2]) - glm::dvec3(0, -1, 0)),
+              0.0, 1e-12);
+  const Grammar g = cpfg("Lsystem: 1\nAxiom: F@L(\"x\")\n");
+  EXPECT_EQ(g.warnings.back(),
+            "'@L' (a label) is left out: it draws nothing in a solid");
 }
 
 TEST(Cpfg, RunsStartBlocksOnceAndStartEachBeforeEveryStepWithGlobals) {

@@ -390,6 +390,27 @@ TEST(Derivation, CountsAsItGoesWhenSizesAreUnpredictable) {
   }
 }
 
+// A recursive homomorphism whose conditions end it early draws far less
+// than its bound (vlab's recursive leaf: 255 segments where the bound is
+// astronomical): the turtle counts what it draws, and refuses only that.
+TEST(Derivation, CountsTheSegmentsOfAConditionalHomomorphismAsTheyAreDrawn) {
+  const std::string rules =
+      "homomorphism:\nmaximum depth: 100\n"
+      "A(t) : t >= 2 \u2192 M(t-2) A(t-1)\nM(t) \u2192 F[+A(t)][-A(t)]F\n"
+      "A(t) : t < 2 \u2192 F(t)\n";
+  EXPECT_EQ(interpret(parse("\u03C9: A(8)\nn=0\n" + rules)).segments.size(),
+            255U);
+  try {
+    (void)interpret(parse("\u03C9: A(30)\nn=0\n" + rules),
+                    {.max_segments = 1000});
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.diagnostic().message,
+              "n = 0 draws more than the limit of 1000 segments "
+              "(--max-segments)");
+  }
+}
+
 // The message of the error that deriving `.ls` text with these options
 // raises, or "no error".
 std::string derive_error(const std::string& text, DerivationOptions options) {

@@ -337,6 +337,25 @@ TEST(Lpy, IgnoresTurtleParametersPlantGLDoesNotRead) {
 
 // PlantGL's predefined leaf `~l`: a flat hexagon one long along the
 // heading and half as wide, scaled by its parameter.
+// PlantGL's moveTo, lineTo and setHead, in its coordinates: Z up, its
+// first left (0, -1, 0), lsolid's (-1, 0, 0).
+TEST(Lpy, MovesDrawsAndHeadsToWhatPlantGLsCoordinatesName) {
+  const Skeleton s = drawn(
+      "MoveTo(1, 2, 3) LineTo(1, 2, 5, 0.3) F SetHead(1,0,0, 0,0,1) F "
+      "@M(0,0,0) @R(0,1,0) F");
+  ASSERT_EQ(s.segments.size(), 4U);
+  EXPECT_EQ(s.segments[0].p0, glm::dvec3(2.0, -1.0, 3.0));
+  EXPECT_EQ(s.segments[0].p1, glm::dvec3(2.0, -1.0, 5.0));
+  EXPECT_DOUBLE_EQ(s.segments[0].end_diameter, 0.6);        // radius 0.3
+  EXPECT_EQ(s.segments[1].p1, glm::dvec3(2.0, -1.0, 6.0));  // frame kept
+  EXPECT_NEAR(glm::distance(s.segments[2].p1 - s.segments[2].p0,
+                            glm::dvec3(0.0, -1.0, 0.0)),
+              0.0, 1e-12);
+  EXPECT_EQ(s.segments[3].p0, glm::dvec3(0.0));
+  EXPECT_NEAR(glm::distance(s.segments[3].p1, glm::dvec3(1.0, 0.0, 0.0)), 0.0,
+              1e-12);
+}
+
 TEST(Lpy, DrawsPlantGLsPredefinedLeaf) {
   const Skeleton s = drawn("F(1)+(90)~l(2, 5)");
   ASSERT_EQ(s.sheets.size(), 1U);

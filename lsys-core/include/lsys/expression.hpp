@@ -40,6 +40,14 @@ struct SuccessorModuleText {
   std::vector<std::pair<std::size_t, std::size_t>> arguments;
 };
 
+/// One of cpfg's arrays (`define: { array len[4][13] = {…}; }`): a run of
+/// global variables from `first`, row by row, of the dimensions given.
+struct ArrayVariable {
+  std::string name;
+  std::uint32_t first = 0;
+  std::vector<std::uint32_t> dimensions;
+};
+
 /// The names an expression may use: the formal parameters of the production
 /// it belongs to (ABOP §1.10), in slot order, and named constants
 /// (`#define`, `--define`), which are folded at compile time.
@@ -59,6 +67,8 @@ struct ExpressionScope {
   /// compiled with `assign_globals` adds the new names it assigns.
   std::vector<std::string>* globals = nullptr;
   bool assign_globals = false;
+  /// cpfg's arrays, which `name[i][j]` reads and statements assign.
+  const std::vector<ArrayVariable>* arrays = nullptr;
   /// What `func(id, x)` reads, when the view file names functions.
   std::shared_ptr<const FunctionTable> functions;
   /// cpfg's operators and functions besides ABOP's: `%`, `?:`, `trunc`,
@@ -212,13 +222,19 @@ class Expression {
     Iteration,
     EmitClear,
     Emit,
-    Emitted
+    Emitted,
+    CheckIndex,
+    GlobalAt,
+    StoreGlobalAt
   };
   /// One instruction: `value` for Constant, `slot` for Parameter, Global,
   /// the stores, and the jump target; `offset` for the error position.
   /// Emit appends the module `slot` with the `value` values on top of the
   /// stack to Variables::emitted; EmitClear empties it; Emitted pushes
   /// 1 when it holds modules (and checks that its brackets balance).
+  /// CheckIndex fails unless 0 <= top < `value` (an array's dimension);
+  /// GlobalAt pushes the global `slot` + trunc(top), StoreGlobalAt stores
+  /// the top there, the index below it.
   struct Instruction {
     Op op = Op::Constant;
     std::uint32_t slot = 0;

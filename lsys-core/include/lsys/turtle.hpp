@@ -51,6 +51,14 @@ class Turtle {
   /// Rolls about H so that L is horizontal: L = V × H / |V × H| with V = +Z,
   /// U = H × L (ABOP p. 57, `$`). Leaves the frame alone when H is vertical.
   void roll_to_vertical() noexcept;
+  /// Heads along `heading`, turning the frame by the least rotation that
+  /// takes H there (left and up follow). Does nothing for a zero vector.
+  void set_heading(const glm::dvec3& heading) noexcept;
+  /// Heads along `heading` with up along `up`'s part across it, left
+  /// completing the frame. Falls back to set_heading when `up` has no such
+  /// part.
+  void set_heading_and_up(const glm::dvec3& heading,
+                          const glm::dvec3& up) noexcept;
   /// Tropism (ABOP §2.2, p. 58): rotates the frame about H × T by
   /// e·|H × T| radians, bending the heading toward T.
   void bend(const glm::dvec3& tropism, double elasticity) noexcept;

@@ -53,6 +53,16 @@ enum class TurtleCommand {
   MovementElasticity,
   MovementElasticityUp,
   MovementElasticityDown,
+  /// cpfg's `@R(hx, hy[, hz[, ux, uy, uz]])`, L-Py's `@R` and `SetHead`:
+  /// heads along h (up along u when given), in the notation's coordinates
+  /// (Settings::query_frame).
+  SetHeading,
+  /// cpfg's `@M(x, y[, z])`, L-Py's `@M` and `MoveTo`: moves to the point,
+  /// drawing nothing.
+  MoveTo,
+  /// L-Py's `LineTo(x, y, z[, r])`: draws a segment to the point (of end
+  /// radius r), the frame unchanged.
+  LineTo,
   Sphere,   ///< cpfg `@O(d)`: a ball of diameter d, or of the width, here
   Surface,  ///< cpfg `~l(s)`: draw a predefined surface (Grammar::surfaces)
   /// A disc of diameter d (or of the width) centred on the turtle, a leaf

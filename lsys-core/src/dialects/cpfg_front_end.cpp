@@ -41,6 +41,9 @@ const std::vector<SymbolCommand> kSymbols = [] {
           {"@Ts", TurtleCommand::MovementElasticity, std::nullopt, 2},
           {"@Ti", TurtleCommand::MovementElasticityUp, std::nullopt, 2},
           {"@Td", TurtleCommand::MovementElasticityDown, std::nullopt, 2},
+          // Heading and position set outright (blackbox.c).
+          {"@R", TurtleCommand::SetHeading, std::nullopt, 6},
+          {"@M", TurtleCommand::MoveTo, std::nullopt, 3},
           // Generalized cylinders, with round cross-sections (general.c).
           {"@Gs", TurtleCommand::CylinderStart, std::nullopt, 0},
           {"@Gc", TurtleCommand::CylinderPoint, std::nullopt, 1},
@@ -72,12 +75,12 @@ const std::vector<SymbolCommand> kSymbols = [] {
   return symbols;
 }();
 
+// A label is text on the screen: nothing to print.
+const std::vector<RefusedName> kLeftOut = {{"@L", "a label"}};
+
 const std::vector<RefusedName> kRefused = {
     {"@bo", "a circle"},
     {"@bc", "a circle"},
-    {"@M", "a move to a point"},
-    {"@R", "setting the heading"},
-    {"@L", "a label"},
     {"@S", "a system call"},
     {"@D", "the turtle's scale"},
     {"@Di", "the turtle's scale"},
@@ -120,6 +123,7 @@ Draft notation(const CpfgView& view) {
   Draft draft;
   draft.symbols = kSymbols;
   draft.refused = kRefused;
+  draft.left_out = kLeftOut;
   draft.syntax.fixed_arity = false;
   draft.syntax.extra_turtle_parameters = true;
   draft.syntax.cpfg_statements = true;

@@ -150,9 +150,10 @@ struct Syntax {
 };
 
 /// When a block of cpfg's statements runs.
-enum class BlockKind { Start, StartEach, EndEach, End };
+enum class BlockKind { Start, StartEach, EndEach, End, Define };
 
-/// A `Start: { … }` block and its kin: the statements, braces included.
+/// A `Start: { … }` block and its kin: the statements, braces included;
+/// or cpfg's `define: { … }`, its arrays.
 struct StatementBlock {
   BlockKind kind;
   Range text;

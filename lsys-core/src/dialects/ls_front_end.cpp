@@ -606,8 +606,9 @@ class LsReader : TextScan {
 
   // cpfg's `Start: { … }` and its kin: kept for the grammar builder.
   bool cpfg_block(Range line) {
-    static constexpr std::array<std::pair<std::string_view, BlockKind>, 6>
+    static constexpr std::array<std::pair<std::string_view, BlockKind>, 7>
         kBlocks{{
+            {"define", BlockKind::Define},
             {"start each", BlockKind::StartEach},
             {"starteach", BlockKind::StartEach},
             {"start", BlockKind::Start},
@@ -634,13 +635,6 @@ class LsReader : TextScan {
   // What cpfg files hold that lsolid does not run yet: refused at their
   // place, by name, rather than misread as settings or productions.
   void refuse_cpfg_only(Range line) const {
-    if (const auto end = match_words(line.begin, line.end, "define")) {
-      std::size_t pos = *end;
-      while (pos < line.end && is_blank(text_[pos])) ++pos;
-      if (pos < line.end && text_[pos] == ':') {
-        fail(line.begin, "cpfg's arrays (a define: block) are not supported");
-      }
-    }
     if (match_words(line.begin, line.end, "ring lsystem") == line.end) {
       fail(line.begin,
            "a ring L-system (contexts that wrap around the string) is not "

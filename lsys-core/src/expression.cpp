@@ -844,6 +844,17 @@ class Compiler {
         (scope_.python && (name == "random" || name == "uniform"))) {
       return parse_random(at);
     }
+    if (scope_.python && name == "randint") {
+      // Python's randint(a, b): a whole number from a to b, both included.
+      std::vector<int> args = parse_arguments();
+      if (args.size() != 2) fail(at, "'randint' takes 2 arguments");
+      const int one = add(Op::Constant, at);
+      nodes_.back().instruction.value = 1.0;
+      const int span =
+          binary(Op::Add, at, binary(Op::Subtract, at, args[1], args[0]), one);
+      return fold(add(Op::Floor, at,
+                      binary(Op::Add, at, args[0], add(Op::Ran, at, span))));
+    }
     if (scope_.python_functions != nullptr) {
       if (const auto it = scope_.python_functions->find(name);
           it != scope_.python_functions->end()) {
@@ -899,13 +910,24 @@ class Compiler {
     const std::string_view saved_text = text_;
     const std::size_t saved_pos = pos_;
     frames_.push_back(std::move(frame));
-    text_ = std::string_view(source_.text()).substr(0, f.end);
-    pos_ = f.begin;
-    const int node = parse_conditional();
-    skip_space();
-    if (pos_ < text_.size()) {
-      fail(pos_,
-           "unexpected '" + std::string(peek_code_point()) + "' in expression");
+    const auto compile = [&](std::size_t begin, std::size_t end) {
+      text_ = std::string_view(source_.text()).substr(0, end);
+      pos_ = begin;
+      const int compiled = parse_conditional();
+      skip_space();
+      if (pos_ < text_.size()) {
+        fail(pos_, "unexpected '" + std::string(peek_code_point()) +
+                       "' in expression");
+      }
+      return compiled;
+    };
+    int node = compile(f.begin, f.end);
+    for (auto b = f.branches.rbegin(); b != f.branches.rend(); ++b) {
+      const int test = compile(b->condition_begin, b->condition_end);
+      const int yes = compile(b->value_begin, b->value_end);
+      const int choice = add(Op::Select, b->condition_begin, test, yes);
+      nodes_.back().c = node;
+      node = choice;
     }
     frames_.pop_back();
     text_ = saved_text;
@@ -990,6 +1012,7 @@ class Compiler {
       if (!accept("]")) fail(pos_, "expected ']'");
       const int checked = add(Op::CheckIndex, subscript_at, subscript);
       nodes_.back().instruction.value = dimension;
+      nodes_.back().instruction.slot = array.python ? 1 : 0;
       if (index < 0) {
         index = checked;
         continue;
@@ -1858,7 +1881,14 @@ double Expression::run(const double* read, double* write,
         need_variables(in).globals[in.slot] = at(top--);
         break;
       case Op::CheckIndex: {
-        const double i = at(top);
+        double& i = at(top);
+        if (in.slot == 1) {
+          if (i != std::trunc(i)) {
+            throw error_at(*source_, in.offset,
+                           "a list's index must be a whole number");
+          }
+          if (i < 0.0 && i >= -in.value) i += in.value;
+        }
         if (!(i >= 0.0 && i < in.value)) {
           std::string what = "subscript ";
           append_number(what, i);
@@ -2047,6 +2077,27 @@ Expression Expression::slot_equals(std::shared_ptr<const SourceFile> source,
              Instruction{.op = Op::Constant, .value = value, .offset = offset},
              Instruction{.op = Op::Equal, .offset = offset}};
   e.stack_depth_ = 2;
+  e.offset_ = offset;
+  e.source_ = std::move(source);
+  return e;
+}
+
+Expression Expression::slots_equal(
+    std::shared_ptr<const SourceFile> source, std::size_t offset,
+    std::span<const std::pair<std::uint32_t, double>> slots) {
+  Expression e;
+  e.code_.clear();  // not the constant 0
+  for (const auto& [slot, value] : slots) {
+    e.code_.push_back(
+        Instruction{.op = Op::Parameter, .slot = slot, .offset = offset});
+    e.code_.push_back(
+        Instruction{.op = Op::Constant, .value = value, .offset = offset});
+    e.code_.push_back(Instruction{.op = Op::Equal, .offset = offset});
+    if (e.code_.size() > 3) {
+      e.code_.push_back(Instruction{.op = Op::And, .offset = offset});
+    }
+  }
+  e.stack_depth_ = 3;
   e.offset_ = offset;
   e.source_ = std::move(source);
   return e;

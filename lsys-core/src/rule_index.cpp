@@ -17,8 +17,9 @@ RuleIndex::RuleIndex(const std::vector<Production>& rules,
   }
   for (std::size_t s = 0; s < alphabet_size; ++s) {
     const auto& list = by_symbol_[s];
-    if (list.size() == 1 && !list[0]->condition && !list[0]->probability &&
-        !list[0]->has_statements() && !list[0]->is_context_sensitive()) {
+    if (list.size() == 1 && !list[0]->is_conditional() &&
+        !list[0]->probability && !list[0]->has_statements() &&
+        !list[0]->is_context_sensitive()) {
       only_[s] = list[0];
     }
   }

@@ -52,6 +52,7 @@ class RuleIndex {
 [[nodiscard]] inline bool condition_holds(const Production& rule,
                                           std::span<const double> slots,
                                           Variables* variables = nullptr) {
+  if (rule.guard && rule.guard->evaluate(slots) == 0.0) return false;
   return !rule.condition || rule.condition->evaluate(slots, variables) != 0.0;
 }
 
@@ -61,6 +62,7 @@ class RuleIndex {
 /// @throws ParseError when a condition or a statement fails.
 [[nodiscard]] inline bool statements_and_condition_hold(
     const Production& rule, std::vector<double>& slots, Variables* variables) {
+  if (rule.guard && rule.guard->evaluate(slots) == 0.0) return false;
   slots.resize(slots.size() + static_cast<std::size_t>(rule.local_count), 0.0);
   if (rule.undo_unless_applied && variables != nullptr) {
     Variables before = *variables;

@@ -24,13 +24,13 @@ bool is_drawing(TurtleCommand c) {
 bool is_deterministic(const Grammar& g) {
   for (const auto* rules : {&g.productions, &g.decompositions}) {
     for (const Production& p : *rules) {
-      if (p.condition || p.probability || p.is_context_sensitive()) {
+      if (p.is_conditional() || p.probability || p.is_context_sensitive()) {
         return false;
       }
     }
   }
   for (const Production& p : g.homomorphisms) {
-    if (p.condition) return false;
+    if (p.is_conditional()) return false;
   }
   return true;
 }
@@ -124,7 +124,8 @@ class CountMatrix {
       }
       if (!is_lower_bound_) return result;  // deterministic: the first rule
       least = least ? entrywise_min(*least, result) : result;
-      if (!rule->condition && !rule->is_context_sensitive()) may_stay = false;
+      if (!rule->is_conditional() && !rule->is_context_sensitive())
+        may_stay = false;
     }
     if (!least) return identity(k);
     return may_stay ? entrywise_min(*least, identity(k)) : *least;
@@ -187,7 +188,7 @@ InterpretationCosts::InterpretationCosts(const Grammar& grammar,
   for (const Production& p : grammar.homomorphisms) {
     const auto [it, first] =
         arity.emplace(p.predecessor.symbol, p.predecessor.parameter_count);
-    if (p.condition || p.probability ||
+    if (p.is_conditional() || p.probability ||
         (!first && it->second != p.predecessor.parameter_count)) {
       is_exact_ = false;
     }
@@ -223,7 +224,7 @@ InterpretationCost InterpretationCosts::cost(SymbolId symbol, int arity,
         result->segments = std::max(result->segments, sum.segments);
         result->modules = std::max(result->modules, sum.modules);
       }
-      if (!rule->condition) {
+      if (!rule->is_conditional()) {
         may_stay = false;
         break;  // later rules never apply
       }

@@ -116,12 +116,68 @@ TEST(Lpy, RefusesPythonItWouldHaveToRunAtItsLine) {
               (void)lpy("import numpy\nAxiom: F\nproduction:\nendlsystem\n");
             }),
             "1:1: 'import numpy'" + tail);
+  // A hook that reads the string L-Py passes it is refused; one that only
+  // prints it is read.
   EXPECT_EQ(located_error_of([] {
               (void)lpy(
-                  "def EndEach(lstring):\n  pass\nAxiom: F\n"
+                  "def EndEach(lstring):\n  x = len(lstring)\nAxiom: F\n"
                   "production:\n");
             }),
-            "1:1: 'def EndEach(lstring):'" + tail);
+            "1:1: 'def EndEach(lstring):', a hook that reads the string L-Py "
+            "passes it" +
+                tail);
+  EXPECT_EQ(located_error_of([] {
+              (void)lpy(
+                  "def EndEach(lstring):\n  print(lstring)\nAxiom: F\n"
+                  "production:\n");
+            }),
+            "no error");
+  EXPECT_EQ(located_error_of([] {
+              (void)lpy("def f(x):\n  y = x\n  return y\nAxiom: A\n");
+            }),
+            "1:1: 'def f(x):'" + tail);
+}
+
+// What L-Py's tutorials write around their rules: functions of returns
+// chosen by if/elif/else (after a docstring), lists of numbers, asserts
+// and prints at the top level, values in predecessors, predecessors of
+// several modules, and Python's randint.
+TEST(Lpy, ReadsFunctionsOfReturnsListsAssertsAndValuesInPredecessors) {
+  const Grammar g = lpy(
+      "k = 2\nprint(k)\nassert 0 < k < 3, 'k'\ncolor = [1, 3, 2]\n"
+      "def size(t):\n  \"\"\" the size \"\"\"\n  if t < k: return t * 10\n"
+      "  elif t == k:\n    return -1\n  else:\n    return 100\n"
+      "def half(x):  # a comment\n  if x > 1:\n    return x / 2\n  return x\n"
+      "Axiom: D(0) A(1) A(2) A(3) F(1)+F(2)\nderivation length: 1\n"
+      "production:\nD(0) --> E(color[-1], color[1])\nD(x) --> D(x+1)\n"
+      "A(t) --> B(size(t), half(t))\nF(x)+F(y) --> G(x+y)\nendlsystem\n");
+  EXPECT_EQ(to_string(derive(g), g.alphabet),
+            "E(2,3)B(10,1)B(-1,1)B(100,1.5)G(3)");
+  EXPECT_EQ(to_string(derive(lpy("Axiom: D(1)\nderivation length: 1\n"
+                                 "production:\nD(0) --> E\nendlsystem\n")),
+                      g.alphabet),
+            "D(1)");
+  EXPECT_EQ(located_error_of([] {
+              (void)lpy("k = 4\nassert k < 3\nAxiom: F\nproduction:\n");
+            }),
+            "2:8: this assertion fails: k < 3");
+  EXPECT_EQ(located_error_of([] {
+              (void)derive(
+                  lpy("c = [1, 2]\nAxiom: A(2)\nderivation length: 1\n"
+                      "production:\nA(i) --> B(c[i])\n"));
+            }),
+            "5:14: subscript 2 is out of range: this dimension of the array "
+            "has 2 elements, 0 to 1");
+  const Grammar r =
+      lpy("from random import randint\nAxiom: A\nderivation length: 1\n"
+          "production:\nA --> B(randint(1, 3))B(randint(1, 3))B(randint(1, 3))"
+          "B(randint(1, 3))B(randint(1, 3))B(randint(1, 3))\nendlsystem\n");
+  const ModuleString drawn = derive(r);
+  ASSERT_EQ(drawn.size(), 6U);
+  for (std::size_t i = 0; i < drawn.size(); ++i) {
+    const double v = drawn.parameters(i)[0];
+    EXPECT_TRUE(v == 1.0 || v == 2.0 || v == 3.0) << v;
+  }
 }
 
 // An L-Py rule whose body is Python: each `produce` is a production whose

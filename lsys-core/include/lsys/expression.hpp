@@ -23,12 +23,22 @@ namespace lsys {
 using FunctionTable = std::vector<std::vector<double>>;
 
 /// A Python function of one `return` (L-Py's `def alpha(x): return 30 -
-/// 10*x`): its parameters and the bytes of the returned expression, which
-/// a call compiles in place with the arguments bound to the parameters.
+/// 10*x`), or of returns chosen by `if`/`elif`/`else`: its parameters and
+/// the bytes of the returned expressions, which a call compiles in place
+/// with the arguments bound to the parameters.
 struct PythonFunction {
   std::vector<std::string> parameters;
   std::size_t begin = 0;
   std::size_t end = 0;
+  /// `if c: return a` (and `elif`) before the last return: the bytes of
+  /// each condition and of its value, tried in order.
+  struct Branch {
+    std::size_t condition_begin = 0;
+    std::size_t condition_end = 0;
+    std::size_t value_begin = 0;
+    std::size_t value_end = 0;
+  };
+  std::vector<Branch> branches;
 };
 
 /// A module of a successor as written: its name (interned) and the bytes of
@@ -46,6 +56,9 @@ struct ArrayVariable {
   std::string name;
   std::uint32_t first = 0;
   std::vector<std::uint32_t> dimensions;
+  /// A Python list: an index is a whole number, and a negative one counts
+  /// from the end (`a[-1]`).
+  bool python = false;
 };
 
 /// The names an expression may use: the formal parameters of the production
@@ -138,6 +151,13 @@ class Expression {
   [[nodiscard]] static Expression slot_equals(
       std::shared_ptr<const SourceFile> source, std::size_t offset,
       std::uint32_t slot, double value);
+
+  /// 1 when each slot holds its value, else 0: the values an L-Py
+  /// predecessor requires (`A(0)`), placed at `offset` of `source`.
+  /// @pre `slots` is not empty.
+  [[nodiscard]] static Expression slots_equal(
+      std::shared_ptr<const SourceFile> source, std::size_t offset,
+      std::span<const std::pair<std::uint32_t, double>> slots);
 
   /// True when the value does not depend on parameters.
   [[nodiscard]] bool is_constant() const noexcept {
@@ -232,7 +252,8 @@ class Expression {
   /// Emit appends the module `slot` with the `value` values on top of the
   /// stack to Variables::emitted; EmitClear empties it; Emitted pushes
   /// 1 when it holds modules (and checks that its brackets balance).
-  /// CheckIndex fails unless 0 <= top < `value` (an array's dimension);
+  /// CheckIndex fails unless 0 <= top < `value` (an array's dimension;
+  /// with `slot` 1, Python's, a whole number from −value, made positive);
   /// GlobalAt pushes the global `slot` + trunc(top), StoreGlobalAt stores
   /// the top there, the index below it.
   struct Instruction {

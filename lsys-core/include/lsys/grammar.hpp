@@ -112,6 +112,9 @@ struct Production {
   /// May contain `[` and `]` (ABOP p. 32); the left context may not.
   std::vector<PatternModule> right_context;
   std::optional<Expression> condition;
+  /// The values a predecessor's parameters must have (L-Py's `A(0)`,
+  /// `D(20, k)`), checked before any statement runs; 1 when they match.
+  std::optional<Expression> guard;
   /// The weight of a stochastic production; absent means weight 1.
   std::optional<Expression> probability;
   /// cpfg's statements run on every match before the condition, and those
@@ -140,6 +143,11 @@ struct Production {
   [[nodiscard]] bool is_context_sensitive() const noexcept {
     return !left_context.empty() || !right_context.empty() ||
            !predecessor_rest.empty();
+  }
+  /// True when the production applies only where a condition or a value
+  /// in its predecessor says so.
+  [[nodiscard]] bool is_conditional() const noexcept {
+    return condition.has_value() || guard.has_value();
   }
   /// True when cpfg's statements run before or after its condition (and
   /// so its successor reads slots they wrote, not the module's values).

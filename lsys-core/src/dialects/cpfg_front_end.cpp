@@ -128,6 +128,7 @@ Draft notation(const CpfgView& view) {
   draft.syntax.extra_turtle_parameters = true;
   draft.syntax.cpfg_statements = true;
   draft.syntax.single_character_modules = true;
+  draft.syntax.several_module_predecessors = true;
   draft.syntax.skip_to_branch_end = true;
   Settings& s = draft.defaults;
   s.roll = RollConvention::Cpfg;

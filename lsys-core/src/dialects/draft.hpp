@@ -135,10 +135,12 @@ struct Syntax {
   /// and statements without a last `;` (ExpressionScope::mathjs).
   bool mathjs = false;
   /// Every module is one character besides the notation's own names
-  /// (cpfg: `FA` is F then A, `@Gc` one module), and a predecessor may be
-  /// several modules. Without it, a predecessor's name is one module,
-  /// however long.
+  /// (cpfg: `FA` is F then A, `@Gc` one module). Without it, a
+  /// predecessor's name is one module, however long.
   bool single_character_modules = false;
+  /// A production's predecessor may be several modules in a row, which
+  /// the successor replaces together (cpfg's and L-Py's).
+  bool several_module_predecessors = false;
   /// cpfg's `=` in a right context skips to the end of the current branch
   /// (`A > [B=]C`, `A > F=]g`); without it `=` is a module.
   bool skip_to_branch_end = false;
@@ -195,6 +197,15 @@ struct Draft {
   std::vector<std::string> python_modules;
   /// L-Py's functions of one `return`, by name.
   std::map<std::string, PythonFunction> python_functions;
+  /// L-Py's lists of numbers at the top level (`color = [1, 3, 2]`): the
+  /// name and the elements, which rules index (`color[m]`).
+  struct PythonList {
+    Range name;
+    std::vector<Range> elements;
+  };
+  std::vector<PythonList> python_lists;
+  /// L-Py's top-level `assert c`: conditions over constants that must hold.
+  std::vector<Range> assertions;
   /// cpfg's blocks of statements, in file order.
   std::vector<StatementBlock> blocks;
   /// cpfg's functions for `func(id, x)`, from the view file.

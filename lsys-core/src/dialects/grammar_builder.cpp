@@ -92,6 +92,11 @@ class GrammarBuilder : TextScan {
     grammar_.warnings = draft_.warnings;
     grammar_.constants = draft_.constants;
     evaluate_defines();  // labels are told from conditions over constants
+    for (const Range& a : draft_.assertions) {
+      if (constant(a) == 0.0) {
+        fail(a.begin, "this assertion fails: " + std::string(view(a)));
+      }
+    }
     declare_names();
     read_aliases();
     read_module_declarations();
@@ -661,6 +666,17 @@ class GrammarBuilder : TextScan {
       for (const Range& arg : raw.arguments) {
         const Range name = trim(arg);
         const std::string formal(view(name));
+        if (draft_.syntax.python && !is_identifier(formal)) {
+          // L-Py's `A(0)` matches only the modules whose parameter is 0: a
+          // hidden slot that the guard compares.
+          const double value = constant(name);
+          pattern_values_.emplace_back(static_cast<std::uint32_t>(slots.size()),
+                                       value);
+          std::string hidden = "#";
+          hidden += std::to_string(slots.size());
+          slots.push_back(std::move(hidden));
+          continue;
+        }
         if (!is_identifier(formal)) {
           fail(name.begin,
                "a parameter of a predecessor or context must be "
@@ -701,15 +717,16 @@ class GrammarBuilder : TextScan {
     const Lhs lhs = split_lhs(text.lhs);
     Production p;
     std::vector<std::string> slots;
+    pattern_values_.clear();
     if (!lhs.left.empty()) {
       p.left_context = pattern(lhs.left, slots, false,
                                "a left context cannot contain brackets");
     }
     const std::vector<PatternModule> predecessor =
         pattern(lhs.predecessor, slots, false, "brackets cannot be rewritten");
-    if (predecessor.empty() ||
-        (predecessor.size() > 1 && (!draft_.syntax.single_character_modules ||
-                                    text.section != Section::Productions))) {
+    if (predecessor.empty() || (predecessor.size() > 1 &&
+                                (!draft_.syntax.several_module_predecessors ||
+                                 text.section != Section::Productions))) {
       fail(lhs.predecessor.begin, "the predecessor must be a single module");
     }
     for (const PatternModule& m : predecessor) {
@@ -722,6 +739,9 @@ class GrammarBuilder : TextScan {
     p.offset = p.predecessor.offset;
     if (!lhs.right.empty()) {
       p.right_context = pattern(lhs.right, slots, true, "");
+    }
+    if (!pattern_values_.empty()) {
+      p.guard = Expression::slots_equal(source_, p.offset, pattern_values_);
     }
     std::vector<std::string> locals;
     ExpressionScope scope =
@@ -847,6 +867,7 @@ class GrammarBuilder : TextScan {
       scope.python_functions = &draft_.python_functions;
       scope.locals = locals;
       scope.globals = &grammar_.globals;
+      scope.arrays = &arrays_;
       return scope;
     }
     if (!draft_.syntax.cpfg_statements) return scope;
@@ -863,6 +884,9 @@ class GrammarBuilder : TextScan {
   void read_blocks() {
     for (const StatementBlock& block : draft_.blocks) {
       if (block.kind == BlockKind::Define) read_arrays(block.text);
+    }
+    for (const Draft::PythonList& list : draft_.python_lists) {
+      read_python_list(list);
     }
     for (const StatementBlock& block : draft_.blocks) {
       if (block.kind == BlockKind::Define) continue;
@@ -1031,6 +1055,35 @@ class GrammarBuilder : TextScan {
                 grammar_.initial_globals.begin() + array.first);
     arrays_.push_back(std::move(array));
   }
+
+  // L-Py's `color = [1, 3, 2]`: an array of one dimension whose indices
+  // are Python's (a negative one counts from the end).
+  void read_python_list(const Draft::PythonList& list) {
+    const std::string name(view(list.name));
+    if (list.elements.empty()) {
+      fail(list.name.begin, "an empty list: lsolid reads lists of numbers");
+    }
+    ArrayVariable array{
+        .name = name,
+        .first = static_cast<std::uint32_t>(grammar_.globals.size()),
+        .dimensions = {static_cast<std::uint32_t>(list.elements.size())},
+        .python = true};
+    for (std::size_t k = 0; k < list.elements.size(); ++k) {
+      grammar_.globals.push_back(name + "[" + std::to_string(k) + "]");
+    }
+    grammar_.initial_globals.resize(grammar_.globals.size(), 0.0);
+    for (std::size_t k = 0; k < list.elements.size(); ++k) {
+      const Range e = list.elements[k];
+      if (text_at(e.begin) == '[' || text_at(e.begin) == '(') {
+        fail(e.begin,
+             "a list of lists or tuples: lsolid reads lists of numbers");
+      }
+      grammar_.initial_globals[array.first + k] = constant(e);
+    }
+    arrays_.push_back(std::move(array));
+  }
+
+  char text_at(std::size_t i) const { return source_->text()[i]; }
 
   void note_variables() {
     bool uses = !grammar_.globals.empty() || grammar_.axiom_body ||
@@ -1337,6 +1390,8 @@ class GrammarBuilder : TextScan {
   };
   std::map<SymbolId, LeftOut> left_out_;
   std::vector<ArrayVariable> arrays_;  // cpfg's, in grammar_.globals
+  // The values an L-Py predecessor requires, by slot (pattern).
+  std::vector<std::pair<std::uint32_t, double>> pattern_values_;
   static constexpr double kMostArrayElements = 1e6;
   std::unordered_map<SymbolId, TurtleCommand> aliases_;
   // The ids of the names the notation refuses, and why.

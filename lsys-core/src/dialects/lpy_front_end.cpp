@@ -206,6 +206,7 @@ class LpyReader : TextScan {
     draft_.left_out = kLeftOut;
     draft_.syntax.radians = true;
     draft_.syntax.python = true;
+    draft_.syntax.several_module_predecessors = true;
     // PlantGL's turtle reads the parameters it knows and ignores the rest
     // (L-Py's predefinedmodules.cpp: `-(a, t)` turns by a).
     draft_.syntax.extra_turtle_parameters = true;
@@ -397,21 +398,22 @@ class LpyReader : TextScan {
       return;
     }
     if (hook_) {
-      draft_.blocks.push_back(StatementBlock{*hook_, body, true});
+      if (!hook_->parameter.empty() &&
+          uses_outside_print(body, hook_->parameter)) {
+        refuse_python(hook_->at, "'" + hook_->line +
+                                     "', a hook that reads the string L-Py "
+                                     "passes it");
+      }
+      draft_.blocks.push_back(StatementBlock{hook_->kind, body, true});
       hook_.reset();
       return;
     }
     if (function_) {
-      // Only a function of one `return` line is kept (compiled where it is
-      // called); any other body is Python lsolid does not run.
-      const Range code = trim(body);
-      const std::string_view text = view(code);
-      if (!text.starts_with("return ") ||
-          text.find('\n') != std::string_view::npos) {
+      // Only a function of returns is kept (compiled where it is called);
+      // any other body is Python lsolid does not run.
+      if (!read_returns(body, function_->function)) {
         refuse_python(function_->at, "'" + function_->line + "'");
       }
-      function_->function.begin = code.begin + 7;
-      function_->function.end = code.end;
       draft_.python_functions[function_->name] = function_->function;
       function_.reset();
       return;
@@ -458,6 +460,17 @@ class LpyReader : TextScan {
     }
     // lsolid draws from its own generator: a seed changes nothing here.
     if (text.starts_with("seed(") || text.starts_with("random.seed(")) return;
+    if (text.starts_with("assert ")) {
+      // `assert c` or `assert c, "message"`: c must hold (over constants).
+      const auto parts = split_top(Range{line.begin + 7, line.end}, ',');
+      draft_.assertions.push_back(trim(parts.front()));
+      return;
+    }
+    // Printing is a side effect on the console: nothing to build.
+    if ((text.starts_with("print(") || text.starts_with("print (")) &&
+        text.ends_with(")")) {
+      return;
+    }
     if (text == "import math" || text == "import random" ||
         text.starts_with("from math import ") ||
         text.starts_with("from random import ") ||
@@ -468,15 +481,28 @@ class LpyReader : TextScan {
     if (read_function(line)) return;
     // L-Py's hooks, run as cpfg runs Start: and its kin.
     for (const auto& [name, kind] :
-         {std::pair{"def Start():", BlockKind::Start},
-          std::pair{"def StartEach():", BlockKind::StartEach},
-          std::pair{"def EndEach():", BlockKind::EndEach},
-          std::pair{"def End():", BlockKind::End}}) {
-      if (text.starts_with(name)) {
-        hook_ = kind;
-        body_ = Range{line.begin + std::string_view(name).size(), line.end};
-        return;
+         {std::pair{"def Start(", BlockKind::Start},
+          std::pair{"def StartEach(", BlockKind::StartEach},
+          std::pair{"def EndEach(", BlockKind::EndEach},
+          std::pair{"def End(", BlockKind::End}}) {
+      if (!text.starts_with(name)) continue;
+      // `def EndEach(lstring):` is passed the string, which lsolid does
+      // not hand to Python: the hook is read when it does not use it.
+      const std::size_t open = std::string_view(name).size();
+      const std::size_t close = text.find(')', open);
+      if (close == std::string_view::npos) break;
+      const std::string parameter(
+          view(trim(Range{line.begin + open, line.begin + close})));
+      std::size_t colon = close + 1;
+      while (colon < text.size() && (text[colon] == ' ' || text[colon] == '\t'))
+        ++colon;
+      if (colon >= text.size() || text[colon] != ':' ||
+          (!parameter.empty() && !is_identifier(parameter))) {
+        break;
       }
+      hook_ = Hook{kind, parameter, line.begin, std::string(text)};
+      body_ = Range{line.begin + colon + 1, line.end};
+      return;
     }
     if (text.starts_with("context().turtle.") ||
         text.starts_with("execContext().turtle.")) {
@@ -491,6 +517,119 @@ class LpyReader : TextScan {
       return;
     }
     define(line);
+  }
+
+  // A function body as L-Py's examples write them: a docstring, then
+  // `return e`, or `if c: return a`, `elif …`, and `else: return b` (or a
+  // last `return b`), each condition and value on one line.
+  bool read_returns(Range body, PythonFunction& f) const {
+    struct Line {
+      std::size_t indent;
+      Range code;
+    };
+    std::vector<Line> lines;
+    std::size_t i = body.begin;
+    while (i < body.end) {
+      std::size_t end = text_.find('\n', i);
+      if (end == std::string::npos || end > body.end) end = body.end;
+      std::size_t first = i;
+      while (first < end && (text_[first] == ' ' || text_[first] == '\t'))
+        ++first;
+      const Range code = trim(Range{first, end});  // comments are blanked
+      if (!code.empty()) lines.push_back(Line{first - i, code});
+      i = end + 1;
+    }
+    std::size_t k = 0;
+    if (k < lines.size()) {
+      const std::string_view t = view(lines[k].code);
+      for (std::string_view quote : {"\"\"\"", "'''", "\"", "'"}) {
+        if (!t.starts_with(quote)) continue;
+        // A docstring: up to the line that closes it.
+        while (k < lines.size()) {
+          const std::string_view l = view(lines[k].code);
+          const std::size_t from = k == 0 ? quote.size() : 0;
+          ++k;
+          if (l.find(quote, from) != std::string_view::npos) break;
+        }
+        break;
+      }
+    }
+    // The value after `return` on this line, or on the next, deeper one.
+    const auto value_of = [&](std::size_t& at,
+                              Range rest) -> std::optional<Range> {
+      if (rest.empty()) {
+        if (++at >= lines.size()) return std::nullopt;
+        rest = lines[at].code;
+      }
+      if (!view(rest).starts_with("return ")) return std::nullopt;
+      ++at;
+      return trim(Range{rest.begin + 7, rest.end});
+    };
+    while (k < lines.size()) {
+      const Range code = lines[k].code;
+      const std::string_view t = view(code);
+      if (t.starts_with("return ")) {
+        if (k + 1 != lines.size()) return false;
+        f.begin = code.begin + 7;
+        f.end = code.end;
+        return true;
+      }
+      const bool is_if = f.branches.empty() && t.starts_with("if ");
+      const bool is_elif = !f.branches.empty() && t.starts_with("elif ");
+      if (is_if || is_elif) {
+        const std::size_t colon = find_top(code, ":");
+        if (colon == std::string::npos) return false;
+        const Range condition =
+            trim(Range{code.begin + (is_if ? 3 : 5), colon});
+        const auto value = value_of(k, trim(Range{colon + 1, code.end}));
+        if (!value || condition.empty()) return false;
+        f.branches.push_back(PythonFunction::Branch{
+            condition.begin, condition.end, value->begin, value->end});
+        continue;
+      }
+      if (!f.branches.empty() && t.starts_with("else")) {
+        const std::size_t colon = find_top(code, ":");
+        if (colon == std::string::npos ||
+            !trim(Range{code.begin + 4, colon}).empty()) {
+          return false;
+        }
+        const auto value = value_of(k, trim(Range{colon + 1, code.end}));
+        if (!value || k != lines.size()) return false;
+        f.begin = value->begin;
+        f.end = value->end;
+        return true;
+      }
+      return false;
+    }
+    return false;  // no last return: Python would return None
+  }
+
+  // True when `name` stands as a word in `body` on a line other than a
+  // `print(…)`, which lsolid skips.
+  bool uses_outside_print(Range body, std::string_view name) const {
+    std::size_t i = body.begin;
+    while (i < body.end) {
+      std::size_t end = text_.find('\n', i);
+      if (end == std::string::npos || end > body.end) end = body.end;
+      const Range line = trim(Range{i, end});
+      i = end + 1;
+      const std::string_view t = view(line);
+      if (t.starts_with("print(") || t.starts_with("print (") ||
+          t.starts_with("#")) {
+        continue;
+      }
+      for (std::size_t k = t.find(name); k != std::string_view::npos;
+           k = t.find(name, k + 1)) {
+        const auto word_char = [](char c) {
+          return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+        };
+        const bool starts = k == 0 || !word_char(t[k - 1]);
+        const bool ends =
+            k + name.size() >= t.size() || !word_char(t[k + name.size()]);
+        if (starts && ends) return true;
+      }
+    }
+    return false;
   }
 
   // `def name(a, b):` and a body, kept if it is one `return` line.
@@ -554,6 +693,20 @@ class LpyReader : TextScan {
     if (!value.empty() &&
         (text_[value.begin] == '\'' || text_[value.begin] == '"')) {
       return;  // a string: metadata such as __authors__
+    }
+    if (value.end >= value.begin + 2 && text_[value.begin] == '[' &&
+        text_[value.end - 1] == ']') {
+      // A list; its elements are read as constants by the grammar builder
+      // (a list of lists or of other things fails there, at its place).
+      Draft::PythonList list{name, {}};
+      const Range inside = trim(Range{value.begin + 1, value.end - 1});
+      if (!inside.empty()) {
+        for (const Range& e : split_top(inside, ',')) {
+          if (!trim(e).empty()) list.elements.push_back(trim(e));
+        }
+      }
+      draft_.python_lists.push_back(std::move(list));
+      return;
     }
     draft_.defines.emplace_back(name, trim(Range{equals + 1, line.end}));
   }
@@ -626,7 +779,13 @@ class LpyReader : TextScan {
   Range head_;
   std::optional<Range> body_;
   std::optional<std::size_t> axiom_at_;  ///< when the body is the axiom's
-  std::optional<BlockKind> hook_;        ///< when the body is a hook's
+  struct Hook {
+    BlockKind kind;
+    std::string parameter;  ///< `lstring` of `def EndEach(lstring):`
+    std::size_t at;
+    std::string line;
+  };
+  std::optional<Hook> hook_;  ///< when the body is a hook's
   struct PendingFunction {
     std::string name;
     std::string line;  ///< the `def` line, for the refusal

@@ -10,13 +10,14 @@
 namespace lsys {
 namespace {
 
-constexpr std::array<std::pair<std::string_view, Dialect>, 6> kNames{{
+constexpr std::array<std::pair<std::string_view, Dialect>, 7> kNames{{
     {"ls", Dialect::Ls},
     {"lparser", Dialect::Lparser},
     {"fractint", Dialect::Fractint},
     {"lpy", Dialect::Lpy},
     {"cpfg", Dialect::Cpfg},
     {"lowclouds", Dialect::Lowclouds},
+    {"lpfg", Dialect::Lpfg},
 }};
 
 std::string_view trimmed(std::string_view s) {
@@ -134,6 +135,11 @@ bool ends_with(std::string_view name, std::string_view extension) {
 
 Dialect detect_dialect(std::string_view text, std::string_view file_name) {
   if (ends_with(file_name, ".lpy")) return Dialect::Lpy;
+  // lpfg's files include its header, often after C's own.
+  if (text.find("lpfgall.h") != std::string_view::npos &&
+      text.find("#include") != std::string_view::npos) {
+    return Dialect::Lpfg;
+  }
   const bool named_ls = ends_with(file_name, ".ls");
   const bool named_l = ends_with(file_name, ".l");
   int numbers = 0;

@@ -648,6 +648,25 @@ class Compiler {
     if (pos_ >= text_.size()) fail(pos_, "expected an expression");
     const auto c = static_cast<unsigned char>(text_[pos_]);
     if (accept("(")) {
+      if (scope_.c_language) {
+        // C's casts: `(int)x` truncates, `(float)x` and its kin are x.
+        skip_space();
+        const std::string type(peek_word());
+        for (std::string_view t : {"int", "long", "float", "double"}) {
+          if (type != t) continue;
+          const std::size_t saved = pos_;
+          pos_ += type.size();
+          skip_space();
+          if (!accept(")")) {
+            pos_ = saved;
+            break;
+          }
+          const int operand = parse_unary();
+          return type == "int" || type == "long"
+                     ? fold(add(Op::Int, at, operand))
+                     : operand;
+        }
+      }
       const int inner = parse_conditional();
       if (!accept(")")) fail(pos_, "expected ')'");
       return inner;
@@ -676,7 +695,12 @@ class Compiler {
              (text_[end - 1] == 'e' || text_[end - 1] == 'E')))) {
       ++end;
     }
-    const std::string_view token = text_.substr(at, end - at);
+    std::string_view token = text_.substr(at, end - at);
+    if (scope_.c_language && token.size() > 1 &&
+        (token.back() == 'f' || token.back() == 'F') &&
+        token.find_first_of("xX") == std::string_view::npos) {
+      token.remove_suffix(1);  // C's float literal, `1.f`, `0.5f`
+    }
     double value = 0.0;
     const auto [ptr, ec] =
         std::from_chars(token.data(), token.data() + token.size(), value,
@@ -871,7 +895,8 @@ class Compiler {
       if (f.cpfg_only) return scope_.cpfg;
       if (f.python_only) return scope_.python;
       if (f.mathjs_only) {
-        return scope_.mathjs || (scope_.python && f.name == "pow");
+        return scope_.mathjs ||
+               ((scope_.python || scope_.c_language) && f.name == "pow");
       }
       return true;
     };
@@ -1049,6 +1074,14 @@ class Compiler {
   // each expression through the tree and its folding.
   std::vector<Instruction> compile_statements(int& stack_depth) {
     std::vector<Instruction> code;
+    const std::size_t at = pos_;
+    if (scope_.read_successor && scope_.locals != nullptr) {
+      // An lpfg body: it applies when a `produce` ran (which ends it).
+      code.push_back(Instruction{.op = Op::Constant, .offset = at});
+      produced_store_ = store_for(std::string(kProducedLocal), at);
+      code.push_back(produced_store_);
+      code.push_back(Instruction{.op = Op::EmitClear, .offset = at});
+    }
     skip_space();
     if (accept("{")) {
       statement_list(code, true);
@@ -1060,6 +1093,7 @@ class Compiler {
     } else {
       statement_list(code, false);
     }
+    for (const std::size_t r : returns_) land(code, r);
     stack_depth = std::max(1, depth_);
     if (stack_depth > kMaxStack) fail(pos_, "statements are nested too deeply");
     return code;
@@ -1564,6 +1598,183 @@ class Compiler {
     fail(at, "undefined name '" + name + "'");
   }
 
+  // lpfg's C++ beside cpfg's statements: typed declarations (`float x =
+  // e, y;`), `for`, `x += e` and its kin, `i++`, and `produce` and
+  // `nproduce` (ExpressionScope::read_successor). True if `word` began
+  // one of these.
+  bool c_statement(std::vector<Instruction>& code, const std::string& word,
+                   std::size_t at) {
+    static constexpr std::array<std::string_view, 7> kTypes{
+        "float", "double", "int", "bool", "long", "unsigned", "const"};
+    if (std::find(kTypes.begin(), kTypes.end(), word) != kTypes.end()) {
+      pos_ += word.size();
+      for (;;) {
+        skip_space();
+        const std::string more(peek_word());
+        if (std::find(kTypes.begin(), kTypes.end(), more) == kTypes.end()) {
+          break;
+        }
+        pos_ += more.size();
+      }
+      for (;;) {
+        skip_space();
+        const std::size_t name_at = pos_;
+        const std::string name(peek_word());
+        if (name.empty() ||
+            !is_name_start(static_cast<unsigned char>(name.front()))) {
+          fail(pos_, "expected a variable's name");
+        }
+        pos_ += name.size();
+        const Instruction store = store_for(name, name_at);
+        skip_space();
+        if (accept("=")) {
+          expression_into(code);
+        } else {
+          code.push_back(Instruction{.op = Op::Constant, .offset = name_at});
+        }
+        code.push_back(store);
+        skip_space();
+        if (!accept(",")) break;
+      }
+      expect_semicolon();
+      return true;
+    }
+    if (word == "for") {
+      pos_ += word.size();
+      skip_space();
+      if (!accept("(")) fail(pos_, "expected '('");
+      skip_space();
+      if (!accept(";")) statement(code);
+      const auto top = static_cast<std::uint32_t>(code.size());
+      std::optional<std::size_t> to_end;
+      skip_space();
+      if (!accept(";")) {
+        expression_into(code);
+        to_end = jump(code, Op::JumpIfZero);
+        expect_semicolon();
+      }
+      // The step runs after the body: compiled apart, then appended.
+      std::vector<Instruction> step;
+      skip_space();
+      if (!accept(")")) {
+        c_simple(step);
+        skip_space();
+        if (!accept(")")) fail(pos_, "expected ')'");
+      }
+      body(code);
+      code.insert(code.end(), step.begin(), step.end());
+      code.push_back(Instruction{.op = Op::Jump, .slot = top, .offset = at});
+      if (to_end) land(code, *to_end);
+      return true;
+    }
+    if ((word == "produce" || word == "nproduce") && scope_.read_successor) {
+      // The modules up to the `;` that ends the statement.
+      pos_ += word.size();
+      const std::size_t end = c_statement_end(pos_);
+      const std::string_view whole = text_;
+      text_ = whole.substr(0, end);
+      emit_successor(code, at);
+      text_ = whole;
+      pos_ = end + 1;
+      if (word == "produce") {
+        code.push_back(
+            Instruction{.op = Op::Constant, .value = 1.0, .offset = at});
+        code.push_back(produced_store_);
+        returns_.push_back(jump(code, Op::Jump));
+      }
+      return true;
+    }
+    if (word == "produce" || word == "nproduce") {
+      fail(at, "'" + word + "' outside a rule");
+    }
+    if (!word.empty() &&
+        is_name_start(static_cast<unsigned char>(word.front()))) {
+      const std::size_t saved = pos_;
+      std::vector<Instruction> simple;
+      if (c_simple(simple, true)) {
+        code.insert(code.end(), simple.begin(), simple.end());
+        expect_semicolon();
+        return true;
+      }
+      pos_ = saved;
+    }
+    return false;
+  }
+
+  // `x += e`, `x -= e`, `x *= e`, `x /= e`, `x++`, `x--`, `++x`, `--x`, or
+  // (unless `only_updates`) `x = e`: into `code`. False, having read
+  // nothing, when none of these stands at pos_.
+  bool c_simple(std::vector<Instruction>& code, bool only_updates = false) {
+    skip_space();
+    const std::size_t at = pos_;
+    Op op = Op::Constant;
+    bool by_one = false;
+    if (accept("++") || accept("--")) {
+      op = text_[at] == '+' ? Op::Add : Op::Subtract;
+      by_one = true;
+      skip_space();
+    }
+    const std::size_t name_at = pos_;
+    const std::string name(peek_word());
+    if (name.empty() ||
+        !is_name_start(static_cast<unsigned char>(name.front())))
+      fail(pos_, "expected a variable's name");
+    pos_ += name.size();
+    skip_space();
+    if (!by_one) {
+      for (const auto& [token, o] :
+           {std::pair{"+=", Op::Add}, std::pair{"-=", Op::Subtract},
+            std::pair{"*=", Op::Multiply}, std::pair{"/=", Op::Divide},
+            std::pair{"++", Op::Add}, std::pair{"--", Op::Subtract}}) {
+        if (accept(token)) {
+          op = o;
+          by_one = std::string_view(token) == "++" ||
+                   std::string_view(token) == "--";
+          break;
+        }
+      }
+    }
+    if (op == Op::Constant) {
+      if (only_updates || !accept("=")) {
+        pos_ = at;
+        return false;
+      }
+      expression_into(code);
+      code.push_back(store_for(name, name_at));
+      return true;
+    }
+    const Instruction store = store_for(name, name_at);
+    code.push_back(Instruction{
+        .op = store.op == Op::StoreGlobal ? Op::Global : Op::Parameter,
+        .slot = store.slot,
+        .offset = name_at});
+    if (by_one) {
+      code.push_back(
+          Instruction{.op = Op::Constant, .value = 1.0, .offset = at});
+    } else {
+      const int before = depth_;
+      depth_ = 0;
+      expression_into(code);
+      depth_ = std::max(before, depth_ + 1);
+    }
+    code.push_back(Instruction{.op = op, .offset = at});
+    code.push_back(store);
+    depth_ = std::max(depth_, 2);
+    return true;
+  }
+
+  // The `;` that ends the statement from `from`, outside brackets.
+  std::size_t c_statement_end(std::size_t from) const {
+    int depth = 0;
+    for (std::size_t k = from; k < text_.size(); ++k) {
+      const char c = text_[k];
+      if (c == '(' || c == '[' || c == '{') ++depth;
+      if (c == ')' || c == ']' || c == '}') --depth;
+      if (c == ';' && depth == 0) return k;
+    }
+    fail(from, "expected ';' after the statement");
+  }
+
   void statement_list(std::vector<Instruction>& code, bool until_brace) {
     const Nesting guard(*this);
     for (;;) {
@@ -1687,11 +1898,16 @@ class Compiler {
       expect_semicolon();
       return;
     }
-    if (word == "printf" || word == "fprintf" || word == "fflush") {
+    if (word == "printf" || word == "fprintf" || word == "fflush" ||
+        (scope_.c_language && word == "Printf")) {
       skip_call();
       expect_semicolon();
       return;
     }
+    if (scope_.c_language) {
+      if (c_statement(code, word, at)) return;
+    }
+
     if (!word.empty() &&
         std::isdigit(static_cast<unsigned char>(word.front())) == 0) {
       std::size_t after = pos_ + word.size();
@@ -1796,6 +2012,7 @@ class Compiler {
   int depth_ = 0;
   std::vector<PythonLine> lines_;
   std::vector<std::string> declared_globals_;  // by `global`
+  std::vector<std::size_t> returns_;  // lpfg's `produce`: jumps to the end
   // The arguments of the Python functions being compiled in place.
   std::vector<std::vector<std::pair<std::string, int>>> frames_;
   Instruction produced_store_;

@@ -226,11 +226,15 @@ class Interpreter {
       state_.movement_elasticity[i] = settings_.movements[i].elasticity;
     }
     state_.contour_sides = settings_.contour_sides;
-    buffers_.resize(static_cast<std::size_t>(settings_.maximum_depth) + 1);
+    buffers_.resize(static_cast<std::size_t>(homomorphism_depth()) + 1);
     slot_buffers_.resize(buffers_.size());
   }
 
   void reserve(std::size_t segments) { skeleton_.segments.reserve(segments); }
+
+  int homomorphism_depth() const {
+    return settings_.homomorphism_depth.value_or(settings_.maximum_depth);
+  }
 
   /// cpfg's variables, which the homomorphism may read and draw from.
   void use_variables(Variables* variables) { variables_ = variables; }
@@ -283,7 +287,7 @@ class Interpreter {
  private:
   void interpret(SymbolId symbol, std::span<const double> params,
                  std::uint32_t generation, int depth) {
-    if (depth < settings_.maximum_depth && homomorphisms_.has_rules(symbol)) {
+    if (depth < homomorphism_depth() && homomorphisms_.has_rules(symbol)) {
       if (const Production* rule = homomorphisms_.first_applicable(
               symbol, params, variables_,
               &slot_buffers_[static_cast<std::size_t>(depth)])) {

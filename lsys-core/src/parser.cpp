@@ -30,12 +30,14 @@ Grammar parse_grammar(std::shared_ptr<const SourceFile> source,
                    "is read as " +
                    std::string(dialect_name(dialect)) + " (--dialect)"});
   }
-  if (!options.view_file.empty() && dialect != Dialect::Cpfg) {
+  if (!options.view_file.empty() && dialect != Dialect::Cpfg &&
+      dialect != Dialect::Lpfg) {
     throw ParseError(Diagnostic{
         .file = source->name(),
-        .message = "--view gives a cpfg file its view file; this file is "
-                   "read as " +
-                   std::string(dialect_name(dialect)) + " (--dialect)"});
+        .message =
+            "--view gives a cpfg or lpfg file its view file; this file is "
+            "read as " +
+            std::string(dialect_name(dialect)) + " (--dialect)"});
   }
   switch (dialect) {
     case Dialect::Lparser:
@@ -48,6 +50,8 @@ Grammar parse_grammar(std::shared_ptr<const SourceFile> source,
       return dialects::read_cpfg(std::move(source), options);
     case Dialect::Lowclouds:
       return dialects::read_lowclouds(std::move(source), options);
+    case Dialect::Lpfg:
+      return dialects::read_lpfg(std::move(source), options);
     case Dialect::Ls:
       break;
   }

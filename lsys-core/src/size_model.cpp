@@ -203,7 +203,8 @@ InterpretationCost InterpretationCosts::cost(SymbolId symbol, int arity,
       is_drawing(grammar_.commands[symbol]) ? 1.0 : 0.0, 1.0};
   std::optional<InterpretationCost> result;
   bool may_stay = true;
-  if (depth < grammar_.settings.maximum_depth) {
+  if (depth < grammar_.settings.homomorphism_depth.value_or(
+                  grammar_.settings.maximum_depth)) {
     for (const Production* rule : homomorphisms_.rules_for(symbol)) {
       if (rule->predecessor.parameter_count != arity) continue;
       InterpretationCost sum;

@@ -36,11 +36,11 @@ void add_grammar_options(CLI::App& command, GrammarInput& input, bool with_roll,
       ->allow_extra_args(false);
   command
       .add_option("--dialect", input.dialect,
-                  "the file's notation: ls, lparser, fractint, lpy, cpfg or "
-                  "lowclouds "
+                  "the file's notation: ls, lparser, fractint, lpy, cpfg, "
+                  "lowclouds or lpfg "
                   "(default: detected from the file)")
       ->check(CLI::IsMember(
-          {"ls", "lparser", "fractint", "lpy", "cpfg", "lowclouds"}));
+          {"ls", "lparser", "fractint", "lpy", "cpfg", "lowclouds", "lpfg"}));
   command
       .add_option("--system", input.system,
                   "in a file of several systems (Fractint), the one to read")

@@ -72,13 +72,14 @@ TEST(Dialect, TellsTheNotationOfEveryPrintable) {
 }
 
 TEST(Dialect, NamesEachNotationAsDashDashDialectTakesIt) {
-  for (Dialect d : {Dialect::Ls, Dialect::Lparser, Dialect::Fractint,
-                    Dialect::Lpy, Dialect::Cpfg}) {
+  for (Dialect d :
+       {Dialect::Ls, Dialect::Lparser, Dialect::Fractint, Dialect::Lpy,
+        Dialect::Cpfg, Dialect::Lowclouds, Dialect::Lpfg}) {
     EXPECT_EQ(dialect_named(dialect_name(d)), d);
   }
   EXPECT_EQ(dialect_name(Dialect::Lparser), "lparser");
   EXPECT_EQ(dialect_name(Dialect::Cpfg), "cpfg");
-  EXPECT_FALSE(dialect_named("lpfg"));
+  EXPECT_FALSE(dialect_named("lindenmayer.js"));
 }
 
 TEST(Dialect, IsForcedByTheParseOptions) {

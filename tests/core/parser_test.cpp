@@ -398,9 +398,13 @@ TEST(Parser, ReportsEachMistakeWithItsOwnMessage) {
             "2:5: unexpected '(': parameters follow a module name, as in F(1)");
   EXPECT_EQ(located_error("#include \"x\"\n\u03C9: F"),
             "1:1: #include is not supported");
-  EXPECT_EQ(located_error("#include <math.h>\n#include <lpfgall.h>\n"),
-            "1:1: this is an lpfg file: its rules are C++, and lsolid does "
-            "not read lpfg");
+  EXPECT_EQ(testing::located_error_of([] {
+              (void)parse_grammar_text(
+                  "#include <math.h>\n#include <lpfgall.h>\n",
+                  {.dialect = Dialect::Ls}, "a.ls");
+            }),
+            "1:1: this is an lpfg file, whose rules are C++: read it with "
+            "--dialect lpfg");
   EXPECT_EQ(located_error("#pragma once\n\u03C9: F"),
             "1:1: unknown directive '#pragma'");
   EXPECT_EQ(located_error("aliases: f=Q\n\u03C9: F"),

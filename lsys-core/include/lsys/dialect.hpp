@@ -16,11 +16,13 @@ enum class Dialect {
   Lpy,        ///< L-Py's declarative part: `Axiom:`, `production:`
   Cpfg,       ///< cpfg `.l` files: C preprocessor, `Lsystem:`, a `.v` beside
   Lowclouds,  ///< L-system Explorer's `.ls`: `stemsize`, `name = value`
+  Lpfg,       ///< lpfg `.l` files: `#include <lpfgall.h>`, C++ rule bodies
 };
 
 /// The notation of a text, from its file name's extension and its lines:
-/// `.lpy` is L-Py; a file that starts (after `#` comments) with two lines
-/// that each begin with a number is Lparser; one whose first line (after
+/// `.lpy` is L-Py; a file that includes `lpfgall.h` is lpfg; a file that starts
+/// (after `#` comments) with two lines that each begin with a number is
+/// Lparser; one whose first line (after
 /// `;` comments and one-line `{ … }` blocks) is `Name {` is Fractint,
 /// unless it is named `.ls`; one that is named neither `.ls` nor `.l` and
 /// has `Axiom:` and `production:` lines is L-Py; one not named `.ls` with
@@ -33,7 +35,7 @@ enum class Dialect {
                                      std::string_view file_name = {});
 
 /// The name `--dialect` takes: `ls`, `lparser`, `fractint`, `lpy`, `cpfg`,
-/// `lowclouds`.
+/// `lowclouds`, `lpfg`.
 [[nodiscard]] std::string_view dialect_name(Dialect dialect) noexcept;
 
 /// The dialect of a name dialect_name gives, if it is one.

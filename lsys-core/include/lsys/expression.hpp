@@ -96,6 +96,9 @@ struct ExpressionScope {
   /// `x if c else y`, `%` (floored) and `//`, `random()` and
   /// `uniform(a, b)`; statements are Python's (parse_python_statements).
   bool python = false;
+  /// lpfg's C++ (with cpfg): typed declarations, `for`, `+=` and `++`,
+  /// `pow`, and, with read_successor, `produce …;` and `nproduce …;`.
+  bool c_language = false;
   /// Names that stand for Python's modules `math` and `random` (`import
   /// random as rd`): `rd.uniform(0, 1)` is `uniform(0, 1)`.
   const std::vector<std::string>* python_modules = nullptr;

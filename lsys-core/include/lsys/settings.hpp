@@ -104,8 +104,11 @@ struct Settings {
   std::uint64_t seed = 0;
   RollConvention roll = RollConvention::Lpfg;
   QueryFrame query_frame = QueryFrame::Cpfg;
-  int maximum_depth = 1;         ///< of homomorphism and decomposition, as cpfg
-  std::vector<SymbolId> ignore;  ///< skipped when matching context
+  int maximum_depth = 1;  ///< of homomorphism and decomposition, as cpfg
+  /// The homomorphism's own depth, where a notation gives each section
+  /// one (lpfg's `maximum depth:` under `interpretation:`).
+  std::optional<int> homomorphism_depth;
+  std::vector<SymbolId> ignore;    ///< skipped when matching context
   std::vector<SymbolId> consider;  ///< if not empty, only these are seen
 
   /// Byte offset of the `n` setting, if the file has one.

@@ -31,6 +31,10 @@ struct PreprocessOptions {
   /// `//` starts a comment, as in C; L-system Explorer's preprocessor
   /// keeps it, as two rolls (`F//`).
   bool line_comments = true;
+  /// Headers whose `#include <…>` or `#include "…"` is dropped (lpfg's
+  /// `lpfgall.h` and C's `math.h`, whose names lsolid knows already);
+  /// any other `#include` is an error.
+  std::vector<std::string> ignored_headers;
 };
 
 /// Runs the C preprocessor that cpfg runs on its `.l` and `.v` files

@@ -96,6 +96,21 @@ const std::vector<RefusedName> kRefused = {
     {"?", "a sub-L-system call"},
 };
 
+// The only file of `extension` in `folder`, if there is exactly one.
+std::optional<std::filesystem::path> only_file(
+    const std::filesystem::path& folder, std::string_view extension) {
+  std::error_code ec;
+  std::optional<std::filesystem::path> only;
+  for (const auto& entry : std::filesystem::directory_iterator(
+           folder.empty() ? std::filesystem::path(".") : folder, ec)) {
+    if (entry.path().extension() != extension || !entry.is_regular_file(ec))
+      continue;
+    if (only) return std::nullopt;
+    only = entry.path();
+  }
+  return only;
+}
+
 // The view file cpfg would be given: the one named, else the `.v` of the
 // same name, else the only `.v` in the folder.
 std::optional<std::filesystem::path> find_view(const SourceFile& source,
@@ -107,16 +122,7 @@ std::optional<std::filesystem::path> find_view(const SourceFile& source,
   std::filesystem::path same = l;
   same.replace_extension(".v");
   if (std::filesystem::is_regular_file(same, ec)) return same;
-  std::optional<std::filesystem::path> only;
-  const std::filesystem::path folder =
-      l.has_parent_path() ? l.parent_path() : std::filesystem::path(".");
-  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
-    if (entry.path().extension() != ".v" || !entry.is_regular_file(ec))
-      continue;
-    if (only) return std::nullopt;
-    only = entry.path();
-  }
-  return only;
+  return only_file(l.parent_path(), ".v");
 }
 
 Draft notation(const CpfgView& view) {
@@ -287,19 +293,42 @@ std::map<int, Contour> read_contours(const CpfgView& view,
 
 Grammar read_cpfg(std::shared_ptr<const SourceFile> source,
                   const ParseOptions& options) {
+  return read_with_view(
+      std::move(source), options,
+      [&](std::shared_ptr<const SourceFile> preprocessed, Draft draft) {
+        return read_ls_lines(std::move(preprocessed), options, std::move(draft),
+                             LsVariant::Cpfg);
+      },
+      {});
+}
+
+Grammar read_with_view(
+    std::shared_ptr<const SourceFile> source, const ParseOptions& options,
+    const std::function<Grammar(std::shared_ptr<const SourceFile>, Draft)>&
+        read,
+    const std::vector<std::string>& ignored_headers) {
   CpfgView view;
   std::optional<std::filesystem::path> view_path = find_view(*source, options);
   if (view_path) {
     const auto view_source = load_source(*view_path);
     check_text(*view_source);
     view = read_cpfg_view(*view_source);
+    if (!ignored_headers.empty() && view.function_set.empty() &&
+        view.functions.empty()) {
+      // lpfg is given its function set on the command line (the object's
+      // `specifications`): the folder's only `.fset`, if it has one.
+      if (const auto fset = only_file(view_path->parent_path(), ".fset")) {
+        view.function_set = fset->filename().string();
+      }
+    }
   }
   const Functions functions =
       view_path ? read_functions(view, *view_path) : Functions{};
-  auto preprocessed =
-      preprocess(*source, PreprocessOptions{.defines = options.defines,
-                                            .tab_continues = true,
-                                            .predefined = functions.names});
+  auto preprocessed = preprocess(
+      *source, PreprocessOptions{.defines = options.defines,
+                                 .tab_continues = true,
+                                 .predefined = functions.names,
+                                 .ignored_headers = ignored_headers});
   Surfaces surfaces = view_path ? read_surfaces(view, *view_path) : Surfaces{};
   std::map<int, Contour> contours =
       view_path ? read_contours(view, *view_path) : std::map<int, Contour>{};
@@ -316,8 +345,7 @@ Grammar read_cpfg(std::shared_ptr<const SourceFile> source,
             ": cpfg's defaults are used (45 degrees, lines 1 pixel wide); "
             "name one with --view");
   }
-  Grammar grammar = read_ls_lines(std::move(preprocessed), options,
-                                  std::move(draft), LsVariant::Cpfg);
+  Grammar grammar = read(std::move(preprocessed), std::move(draft));
   for (std::size_t i = 0; i < surfaces.names.size(); ++i) {
     if (const auto symbol = grammar.alphabet.find(surfaces.names[i])) {
       grammar.surfaces[*symbol] = std::move(surfaces.meshes[i]);

@@ -43,6 +43,7 @@ enum class Key {
   Seed,
   Roll,
   MaximumDepth,
+  HomomorphismDepth,
   Ignore,
   Consider,
   LsystemLabel,
@@ -73,6 +74,9 @@ struct ProductionText {
   /// Production::successor_from_body): one production, rhs an empty
   /// range.
   bool python_builds = false;
+  /// The body is lpfg's C++ (`{ … produce …; }`), read as cpfg's
+  /// statements; python_builds is then set too.
+  bool c_body = false;
 };
 
 /// A name of a `module` line, and the parameter count its list gives.
@@ -146,6 +150,11 @@ struct Syntax {
   bool skip_to_branch_end = false;
   /// Python's expressions (ExpressionScope::python), as L-Py writes them.
   bool python = false;
+  /// lpfg's C++ in statements and bodies (ExpressionScope::c_language).
+  bool c_language = false;
+  /// A module is a C identifier, which must be the notation's or declared
+  /// (lpfg); `SB()` takes no parameters.
+  bool identifier_modules = false;
   /// Only `p1:`, `P12:` are labels (L-system Explorer): `P : * → …` is the
   /// module P with the condition "always".
   bool numbered_labels = false;

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string_view>
 
@@ -38,6 +39,22 @@ enum class LsVariant {
 /// (docs/dialects/cpfg.md).
 /// @throws ParseError as read_ls, in either file.
 [[nodiscard]] Grammar read_cpfg(std::shared_ptr<const SourceFile> source,
+                                const ParseOptions& options);
+
+/// What cpfg and lpfg share: finds and reads the view file beside the
+/// `.l` (its functions, surfaces and contours), runs the C preprocessor on
+/// the file, and hands the preprocessed text and a Draft of the view's
+/// settings to `read`, whose grammar then gets the surfaces and contours.
+/// The preprocessor drops the `#include` of `ignored_headers`.
+[[nodiscard]] Grammar read_with_view(
+    std::shared_ptr<const SourceFile> source, const ParseOptions& options,
+    const std::function<Grammar(std::shared_ptr<const SourceFile>, Draft)>&
+        read,
+    const std::vector<std::string>& ignored_headers);
+
+/// Reads an lpfg `.l` file (docs/dialects/lpfg.md): cpfg's successor, whose
+/// rules are C++ bodies that `produce` their successors.
+[[nodiscard]] Grammar read_lpfg(std::shared_ptr<const SourceFile> source,
                                 const ParseOptions& options);
 
 /// Reads the files of Lowclouds' L-system Explorer

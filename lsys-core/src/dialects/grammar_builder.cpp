@@ -343,8 +343,10 @@ class GrammarBuilder : TextScan {
       file_defines_.insert(name);
       if (given.count(name) != 0) continue;  // --define wins
       if (draft_.variables.count(name) != 0) {
+        // lpfg's `int n;` starts at 0.
         grammar_.globals.push_back(name);
-        grammar_.initial_globals.push_back(constant(value));
+        grammar_.initial_globals.push_back(value.empty() ? 0.0
+                                                         : constant(value));
         continue;
       }
       grammar_.constants[name] = constant(value);
@@ -358,7 +360,8 @@ class GrammarBuilder : TextScan {
     ExpressionScope scope{.constants = &grammar_.constants,
                           .used_constants = &used_constants_,
                           .radians = draft_.syntax.radians,
-                          .mathjs = draft_.syntax.mathjs};
+                          .mathjs = draft_.syntax.mathjs,
+                          .c_language = draft_.syntax.c_language};
     if (draft_.syntax.python) {
       scope.python = true;
       scope.python_modules = &draft_.python_modules;
@@ -509,8 +512,23 @@ class GrammarBuilder : TextScan {
         fail(i, std::string("unexpected '") + text_[i] +
                     "': parameters follow a module name, as in F(1)");
       }
-      const std::size_t length =
+      std::size_t length =
           grammar_.alphabet.match_length(text_.substr(i, r.end - i));
+      if (draft_.syntax.identifier_modules &&
+          (std::isalpha(static_cast<unsigned char>(text_[i])) != 0 ||
+           text_[i] == '_')) {
+        // lpfg: a module is a C identifier the notation or a `module`
+        // line names, never split into letters.
+        std::size_t e = i;
+        while (e < r.end && is_word_char(text_[e])) ++e;
+        const std::string_view word = text_.substr(i, e - i);
+        if (!grammar_.alphabet.find(word)) {
+          fail(i, "'" + std::string(word) +
+                      "' is not a module: declare it with 'module " +
+                      std::string(word) + "(…);'");
+        }
+        length = e - i;
+      }
       RawModule m{grammar_.alphabet.intern(text_.substr(i, length)), i, {}};
       reject_refused(m.symbol, i);
       i += length;
@@ -531,7 +549,10 @@ class GrammarBuilder : TextScan {
           if (text_[close] == ')' && --depth == 0) break;
         }
         if (close >= r.end) fail(j, "unclosed '('");
-        for (const Range& arg : split_top(Range{j + 1, close}, ',')) {
+        const bool none = draft_.syntax.identifier_modules &&
+                          trim(Range{j + 1, close}).empty();  // `SB()`
+        for (const Range& arg : none ? std::vector<Range>{}
+                                     : split_top(Range{j + 1, close}, ',')) {
           if (trim(arg).empty()) fail(arg.begin, "expected an expression");
           m.arguments.push_back(arg);
         }
@@ -767,8 +788,11 @@ class GrammarBuilder : TextScan {
       p.undo_unless_applied = true;
       p.successor_from_body = text.python_builds;
       if (text.python_builds) read_successors_into(scope, p.successor);
-      p.before = parse_python_statements(source_, text.python_body->begin,
-                                         text.python_body->end, scope);
+      p.before = text.c_body
+                     ? parse_statements(source_, text.python_body->begin,
+                                        text.python_body->end, scope)
+                     : parse_python_statements(source_, text.python_body->begin,
+                                               text.python_body->end, scope);
       const auto produced =
           std::find(locals.begin(), locals.end(), kProducedLocal);
       p.condition = Expression::slot_equals(
@@ -875,6 +899,8 @@ class GrammarBuilder : TextScan {
     scope.globals = &grammar_.globals;
     scope.arrays = &arrays_;
     scope.cpfg = true;
+    scope.c_language = draft_.syntax.c_language;
+    if (scope.c_language) scope.python_functions = &draft_.python_functions;
     scope.functions = draft_.functions;
     return scope;
   }
@@ -1284,6 +1310,9 @@ class GrammarBuilder : TextScan {
             break;
           }
           s.maximum_depth = static_cast<int>(whole(v, 1000));
+          break;
+        case Key::HomomorphismDepth:
+          s.homomorphism_depth = static_cast<int>(whole(v, 1000));
           break;
         case Key::Ignore:
           s.ignore = symbol_list(v);

@@ -556,28 +556,9 @@ class LsReader : TextScan {
   }
 
   void directive(Range line) {
-    std::size_t i = line.begin + 1;
-    while (i < line.end && std::isalpha(static_cast<unsigned char>(text_[i]))) {
-      ++i;
-    }
-    const std::string_view word =
-        text_.substr(line.begin + 1, i - line.begin - 1);
-    const Range rest = trim(Range{i, line.end});
+    const auto [word, rest] = directive_parts(line);
     if (word == "define") {
-      std::size_t j = rest.begin;
-      while (j < rest.end && is_word_char(text_[j])) ++j;
-      const Range name{rest.begin, j};
-      if (name.empty() || !is_identifier(view(name))) {
-        fail(rest.begin, "expected a name after #define");
-      }
-      // cpfg runs the C preprocessor, which takes `//` for a comment.
-      Range value = trim(Range{j, rest.end});
-      if (const std::size_t comment = find_in(value, "//");
-          comment != std::string::npos) {
-        value = trim(Range{value.begin, comment});
-      }
-      if (value.empty()) fail(j, "expected a value after the name");
-      draft_.defines.emplace_back(name, value);
+      draft_.defines.push_back(define_directive(rest));
       return;
     }
     if (word == "ignore" || word == "consider") {
@@ -588,7 +569,7 @@ class LsReader : TextScan {
       draft_.settings.push_back(
           SettingText{word == "ignore" ? Key::Ignore : Key::Consider,
                       {},
-                      Range{line.begin, i},
+                      Range{line.begin, line.begin + 1 + word.size()},
                       value});
       return;
     }
@@ -596,8 +577,8 @@ class LsReader : TextScan {
       // lpfg's files include its header, often after C's own.
       if (text_.find("lpfgall.h") != std::string_view::npos) {
         fail(line.begin,
-             "this is an lpfg file: its rules are C++, and lsolid does not "
-             "read lpfg");
+             "this is an lpfg file, whose rules are C++: read it with "
+             "--dialect lpfg");
       }
       fail(line.begin, "#include is not supported");
     }

@@ -185,4 +185,30 @@ std::optional<std::size_t> TextScan::match_words(
   return pos;
 }
 
+std::pair<std::string_view, Range> TextScan::directive_parts(Range line) const {
+  std::size_t i = line.begin + 1;
+  while (i < line.end && std::isalpha(static_cast<unsigned char>(text_[i]))) {
+    ++i;
+  }
+  return {text_.substr(line.begin + 1, i - line.begin - 1),
+          trim(Range{i, line.end})};
+}
+
+std::pair<Range, Range> TextScan::define_directive(Range rest) const {
+  std::size_t j = rest.begin;
+  while (j < rest.end && is_word_char(text_[j])) ++j;
+  const Range name{rest.begin, j};
+  if (name.empty() || !is_identifier(view(name))) {
+    fail(rest.begin, "expected a name after #define");
+  }
+  // cpfg runs the C preprocessor, which takes `//` for a comment.
+  Range value = trim(Range{j, rest.end});
+  if (const std::size_t comment = find_in(value, "//");
+      comment != std::string::npos) {
+    value = trim(Range{value.begin, comment});
+  }
+  if (value.empty()) fail(j, "expected a value after the name");
+  return {name, value};
+}
+
 }  // namespace lsys::dialects

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "lsys/source.hpp"
@@ -81,6 +82,13 @@ class TextScan {
   /// in a letter does not match the start of a longer word.
   [[nodiscard]] std::optional<std::size_t> match_words(
       std::size_t pos, std::size_t end, std::string_view spelling) const;
+  /// A directive line `#word rest`: the word and the rest, trimmed.
+  [[nodiscard]] std::pair<std::string_view, Range> directive_parts(
+      Range line) const;
+  /// The name and the value of a `#define NAME value` whose text after
+  /// `define` is `rest` (a `//` comment after the value left out).
+  /// @throws ParseError without a name or a value.
+  [[nodiscard]] std::pair<Range, Range> define_directive(Range rest) const;
 
  protected:
   std::shared_ptr<const SourceFile> source_;

@@ -1,0 +1,145 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// The lpfg front end (docs/dialects/lpfg.md): statements that end in `;`,
+// C++ rule bodies that `produce` their successors, lpfg's named modules,
+// and what it refuses.
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+#include <string>
+
+#include "lsys/dialect.hpp"
+#include "lsys/interpretation.hpp"
+#include "support/core_helpers.hpp"
+
+namespace lsys {
+namespace {
+
+using testing::located_error_of;
+
+Grammar lpfg(std::string_view text) {
+  return parse_grammar_text(text, {.dialect = Dialect::Lpfg}, "lsystem.l");
+}
+
+std::string derived_lpfg(std::string_view text) {
+  const Grammar g = lpfg(text);
+  return to_string(derive(g), g.alphabet);
+}
+
+constexpr std::string_view kHead =
+    "#include <lpfgall.h>\n#include <math.h>\n#define ANGLE 45\n";
+
+TEST(Lpfg, IsDetectedByItsHeader) {
+  EXPECT_EQ(detect_dialect("#include <lpfgall.h>\nAxiom: A;\n", "a.l"),
+            Dialect::Lpfg);
+  EXPECT_EQ(dialect_named("lpfg"), Dialect::Lpfg);
+}
+
+// vlab's LPFG/Introduction/compound-param, as lpfg writes it: each body
+// produces its successor, lpfg's names are modules, `SB()` takes nothing.
+TEST(Lpfg, ReadsRulesWhoseBodiesProduceTheirSuccessors) {
+  const std::string text =
+      std::string(kHead) +
+      "derivation length: 2;\nmodule A(float);\nmodule I(float);\n"
+      "Axiom: SetWidth(3) A(1.0);\n"
+      "A(v) :\n{\n  produce I(1)\n    SB() Right(ANGLE) A(v) EB()\n"
+      "    SB() Left(ANGLE) A(v) EB() I(1) A(v);\n}\n"
+      "I(x) : { produce I(2*x); }\n"
+      "interpretation:\nA(v) : { produce IncColor() F(v); }\n"
+      "I(x) : { produce F(x); }\n";
+  EXPECT_EQ(derived_lpfg(text),
+            "SetWidth(3) I(2) SB Right(45) I(1) SB Right(45) A(1) EB SB "
+            "Left(45) A(1) EB I(1)A(1) EB SB Left(45) I(1) SB Right(45) A(1) "
+            "EB SB Left(45) A(1) EB I(1)A(1) EB I(2)I(1) SB Right(45) A(1) EB "
+            "SB Left(45) A(1) EB I(1)A(1)");
+  EXPECT_EQ(interpret(lpfg(text)).segments.size(), 17U);
+}
+
+// A body runs as C++: declarations, if/else, for, +=, ++, casts, float
+// literals; `produce` ends it, and a body that produces nothing leaves the
+// module to the next rule.
+TEST(Lpfg, RunsTheBodysStatementsInOrder) {
+  EXPECT_EQ(
+      derived_lpfg(std::string(kHead) +
+                   "derivation length: 1;\nmodule A(int);\nmodule B(float, "
+                   "float);\nAxiom: A(3) A(7);\n"
+                   "A(n) : {\n  float sum = 0.5f, k;\n  int i;\n"
+                   "  for (i = 0; i < n; i++) { sum += i; }\n"
+                   "  k = (int)(sum / 2);\n  if (n > 5) produce B(sum, k);\n"
+                   "  nproduce B(0, 0);\n}\n"
+                   "A(n) : { produce B(-1, n); }\n"),
+      "B(-1,3)B(21.5,10)");
+}
+
+TEST(Lpfg, KeepsGlobalsAndRunsStartBlocks) {
+  EXPECT_EQ(derived_lpfg(std::string(kHead) +
+                         "int count;\nconst float step = 2;\n"
+                         "derivation length: 3;\nmodule A(float);\n"
+                         "Start: { count = 10; }\n"
+                         "StartEach: { count += 1; }\n"
+                         "Axiom: A(0);\n"
+                         "A(x) : produce A(count * step);\n"),
+            "A(26)");
+}
+
+TEST(Lpfg, ReadsFunctionsOfOneReturnAndTheirCalls) {
+  EXPECT_EQ(derived_lpfg(std::string(kHead) +
+                         "float half(float x) { return x / 2; }\n"
+                         "derivation length: 1;\nmodule A(float);\n"
+                         "Axiom: A(8);\nA(x) : { produce A(half(x) + "
+                         "pow(2, 3) + sin(M_PI / 2)); }\n"),
+            "A(13)");
+  EXPECT_EQ(located_error_of([] {
+              (void)lpfg(
+                  "#include <lpfgall.h>\nfloat f(float x) { float y "
+                  "= x; return y; }\nAxiom: F(1);\n");
+            }),
+            "2:1: 'float f(float x)': a C++ function; lsolid reads "
+            "functions of one 'return' only (docs/dialects/lpfg.md)");
+}
+
+// lpfg's turtle is cpfg's: the heading starts up, Left and Right turn,
+// Sphere and Circle take radii.
+TEST(Lpfg, DrawsWithLpfgsNamedModules) {
+  const Skeleton s = interpret(lpfg(
+      "#include <lpfgall.h>\nAxiom: F(1) Left(90) F(2) SB() Right(90) F(1) "
+      "EB() Sphere(0.5) Label(\"tip\");\n"));
+  ASSERT_EQ(s.segments.size(), 3U);
+  EXPECT_NEAR(glm::distance(s.segments[0].p1, glm::dvec3(0, 0, 1)), 0.0, 1e-12);
+  EXPECT_NEAR(glm::length(s.segments[1].p1 - s.segments[1].p0), 2.0, 1e-12);
+  EXPECT_NEAR(glm::dot(s.segments[1].p1 - s.segments[1].p0,
+                       s.segments[2].p1 - s.segments[2].p0),
+              0.0, 1e-12);
+  ASSERT_EQ(s.spheres.size(), 1U);
+  EXPECT_DOUBLE_EQ(s.spheres[0].diameter, 1.0);
+}
+
+TEST(Lpfg, RefusesWhatItCannotReadAtItsPlace) {
+  EXPECT_EQ(located_error_of([] {
+              (void)lpfg("#include <lpfgall.h>\nAxiom: F(1) Foo(2);\n");
+            }),
+            "2:13: 'Foo' is not a module: declare it with 'module Foo(…);'");
+  EXPECT_EQ(located_error_of([] {
+              (void)lpfg("#include <lpfgall.h>\nAxiom: Surface(0, 1);\n");
+            }),
+            "2:8: 'Surface' (a predefined surface) is not supported by "
+            "lsolid");
+  EXPECT_EQ(located_error_of([] {
+              (void)lpfg(
+                  "#include <lpfgall.h>\nstruct D { float x; };\n"
+                  "Axiom: F(1);\n");
+            }),
+            "2:1: 'struct D': a C++ type; lsolid reads modules of numbers "
+            "only (docs/dialects/lpfg.md)");
+  EXPECT_EQ(located_error_of([] {
+              (void)lpfg(
+                  "#include <lpfgall.h>\n#include \"mine.h\"\n"
+                  "Axiom: F(1);\n");
+            }),
+            "2:1: #include is not supported: copy the included file's text "
+            "into this one");
+}
+
+}  // namespace
+}  // namespace lsys

@@ -1687,6 +1687,18 @@ class Compiler {
     if (word == "produce" || word == "nproduce") {
       fail(at, "'" + word + "' outside a rule");
     }
+    for (std::string_view keyword :
+         {"switch", "case", "return", "break", "continue", "goto", "new",
+          "delete", "std", "auto", "struct", "class"}) {
+      if (word == keyword) {
+        std::string what = "C++'s '";
+        what += word;
+        what +=
+            "' is not supported: lsolid reads declarations, assignments, if, "
+            "for, while, do, produce and nproduce (docs/dialects/lpfg.md)";
+        fail(at, what);
+      }
+    }
     if (!word.empty() &&
         is_name_start(static_cast<unsigned char>(word.front()))) {
       const std::size_t saved = pos_;

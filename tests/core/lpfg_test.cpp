@@ -117,6 +117,13 @@ TEST(Lpfg, DrawsWithLpfgsNamedModules) {
 
 TEST(Lpfg, RefusesWhatItCannotReadAtItsPlace) {
   EXPECT_EQ(located_error_of([] {
+              (void)lpfg("#include <lpfgall.h>\nmodule A(int);\nAxiom: A(1);\n"
+                         "A(n) : { switch (n) { case 1: produce A(2); } }\n");
+            }),
+            "4:10: C++'s 'switch' is not supported: lsolid reads "
+            "declarations, assignments, if, for, while, do, produce and "
+            "nproduce (docs/dialects/lpfg.md)");
+  EXPECT_EQ(located_error_of([] {
               (void)lpfg("#include <lpfgall.h>\nAxiom: F(1) Foo(2);\n");
             }),
             "2:13: 'Foo' is not a module: declare it with 'module Foo(…);'");

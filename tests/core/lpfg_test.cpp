@@ -83,6 +83,18 @@ TEST(Lpfg, KeepsGlobalsAndRunsStartBlocks) {
             "A(26)");
 }
 
+// lpfg gives decomposition and interpretation each their depth.
+TEST(Lpfg, KeepsTheInterpretationsOwnMaximumDepth) {
+  const Grammar g = lpfg(
+      "#include <lpfgall.h>\nderivation length: 0;\nmodule A(int);\n"
+      "Axiom: A(0);\ndecomposition:\nmaximum depth: 1;\n"
+      "interpretation:\nmaximum depth: 3;\n"
+      "A(n) : { produce F(1) A(n+1); }\n");
+  EXPECT_EQ(g.settings.maximum_depth, 1);
+  EXPECT_EQ(g.settings.homomorphism_depth, 3);
+  EXPECT_EQ(interpret(g).segments.size(), 3U);
+}
+
 TEST(Lpfg, ReadsFunctionsOfOneReturnAndTheirCalls) {
   EXPECT_EQ(derived_lpfg(std::string(kHead) +
                          "float half(float x) { return x / 2; }\n"

@@ -372,8 +372,16 @@ class Interpreter {
     const double a = p[0];
     const double b = p[1];
     const double c = p.size() > 2 ? p[2] : 0.0;
-    return settings_.query_frame == QueryFrame::PlantGL ? glm::dvec3(b, -a, c)
-                                                        : glm::dvec3(a, -c, b);
+    switch (settings_.query_frame) {
+      case QueryFrame::PlantGL:
+        return glm::dvec3(b, -a, c);
+      case QueryFrame::Babylon:
+        // Its home frame (H, L, U) = (+X, +Z, +Y) is lsolid's.
+        return glm::dvec3(-c, -b, a);
+      case QueryFrame::Cpfg:
+        break;
+    }
+    return glm::dvec3(a, -c, b);
   }
 
   // cpfg's `@R` (blackbox.c): a zero heading is cpfg's up; an up that is
@@ -383,7 +391,8 @@ class Interpreter {
     Turtle& turtle = state_.turtle;
     glm::dvec3 h =
         from_frame(params.first(std::min<std::size_t>(3, params.size())));
-    const bool plantgl = settings_.query_frame == QueryFrame::PlantGL;
+    // PlantGL and L-system Explorer keep up's part across the heading.
+    const bool plantgl = settings_.query_frame != QueryFrame::Cpfg;
     if (h == glm::dvec3(0.0)) {
       if (plantgl) return;
       h = glm::dvec3(0.0, 0.0, 1.0);

@@ -90,6 +90,17 @@ TEST(Lowclouds, DerivationLengthWinsOverTheVariableN) {
   EXPECT_EQ(derived("stemsize: 1.5\ndlength: 2\naxiom: F\nF->FF\n"), "FFFF");
 }
 
+// turtle3d.js's goto (`@M` draws, `@m` moves) and setHeading, in its
+// Babylon.js coordinates: Y up, the turtle home along +X with left +Z.
+TEST(Lowclouds, MovesDrawsAndHeadsToPointsInItsCoordinates) {
+  const Skeleton s =
+      interpret(lowclouds("n=0\naxiom: @m(1,2,3)@M(1,2,5)@R(0,1,0)F\n"));
+  ASSERT_EQ(s.segments.size(), 2U);
+  EXPECT_EQ(s.segments[0].p0, glm::dvec3(-3.0, -2.0, 1.0));
+  EXPECT_EQ(s.segments[0].p1, glm::dvec3(-5.0, -2.0, 1.0));
+  EXPECT_EQ(s.segments[1].p1 - s.segments[1].p0, glm::dvec3(0.0, -1.0, 0.0));
+}
+
 TEST(Lowclouds, KeepsDoubleSlashesAsTwoRolls) {
   // hilbert3d.ls ends its productions with `//`, which C would take for a
   // comment.
@@ -213,9 +224,8 @@ TEST(Lowclouds, DrawsADiscOneAcrossUnlessToldInTheHeadingUpPlane) {
 TEST(Lowclouds, RefusesWhatItCannotBuildByName) {
   EXPECT_EQ(lowclouds_error("derivation length: 1\naxiom: F@c(2)\n"),
             "2:9: '@c' (a circle) is not supported by lsolid");
-  EXPECT_EQ(lowclouds_error("derivation length: 1\naxiom: F@m(0,0,1)F\n"),
-            "2:9: '@m' (a move to a point) is not supported by "
-            "lsolid");
+  EXPECT_EQ(lowclouds_error("derivation length: 1\naxiom: F@H F\n"),
+            "2:9: '@H' (the turtle's home) is not supported by lsolid");
   EXPECT_EQ(lowclouds_error("derivation length: 1\naxiom: A\nA -> {(0)F}\n"),
             "3:6: L-system Explorer's '{(n)' (a path or a spline) "
             "is not supported; write '{' for a polygon");

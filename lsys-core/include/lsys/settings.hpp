@@ -17,10 +17,12 @@ namespace lsys {
 /// rolls left toward up. Cpfg: the opposite, as cpfg computes it.
 enum class RollConvention { Lpfg, Cpfg };
 
-/// The coordinates in which the turtle answers queries (`?P`, `?H`, …):
-/// cpfg's (Y up; its up is lsolid's −up) or PlantGL's, L-Py's turtle (Z
-/// up, starting with left (0, −1, 0) where lsolid's is (−1, 0, 0)).
-enum class QueryFrame { Cpfg, PlantGL };
+/// The coordinates in which the turtle answers queries (`?P`, `?H`, …)
+/// and reads points (`@M`): cpfg's (Y up; its up is lsolid's −up),
+/// PlantGL's, L-Py's turtle (Z up, starting with left (0, −1, 0) where
+/// lsolid's is (−1, 0, 0)), or Babylon.js's, L-system Explorer's (Y up,
+/// the turtle starting along +X with left +Z).
+enum class QueryFrame { Cpfg, PlantGL, Babylon };
 
 /// One of cpfg's movements (Mech's model, 1994: the view file's `tropism:`
 /// and `torque:` lines), applied before each step `F`, `f`, `G`, `g`. A

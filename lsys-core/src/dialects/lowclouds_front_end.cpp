@@ -31,6 +31,11 @@ const std::vector<SymbolCommand> kSymbols = [] {
                      // Its disc too, in the heading–up plane.
                      {"@o", TurtleCommand::DiscAcrossLeft, 1.0, 1},
                      {"@D", TurtleCommand::None, std::nullopt, std::nullopt},
+                     // turtle3d.js's goto with the pen down (a line) and up,
+                     // and setHeading (then setUp), in its coordinates.
+                     {"@M", TurtleCommand::LineTo, std::nullopt, 3},
+                     {"@m", TurtleCommand::MoveTo, std::nullopt, 3},
+                     {"@R", TurtleCommand::SetHeading, std::nullopt, 6},
                      {"@Di", TurtleCommand::None, std::nullopt, std::nullopt},
                  });
   return symbols;
@@ -38,9 +43,6 @@ const std::vector<SymbolCommand> kSymbols = [] {
 
 const std::vector<RefusedName> kRefused = {
     {"@c", "a circle"},
-    {"@M", "a move to a point"},
-    {"@m", "a move to a point"},
-    {"@R", "setting the heading"},
     {"@H", "the turtle's home"},
     {"@Cs", "a contour"},
     {"@Ce", "a contour"},
@@ -83,6 +85,7 @@ Draft notation() {
   Settings& s = draft.defaults;
   // `/` turns U toward L, `\` L toward U: ABOP's and cpfg's way.
   s.roll = RollConvention::Cpfg;
+  s.query_frame = QueryFrame::Babylon;
   s.angle_deg = 90.0;     // `delta`
   s.step = 1.0;           // `step`
   s.initial_width = 0.1;  // `stemsize`, a diameter

@@ -793,6 +793,17 @@ class Compiler {
         return node;
       }
     }
+    if (scope_.undefined != nullptr &&
+        (scope_.locals != nullptr || scope_.globals != nullptr)) {
+      scope_.undefined->emplace_back(name, at);
+      const Instruction store =
+          scope_.locals != nullptr ? new_local(name, at) : new_global(name, at);
+      const int node =
+          add(store.op == Op::StoreGlobal ? Op::Global : Op::Parameter, at);
+      nodes_.back().instruction.slot = store.slot;
+      return node;
+    }
+    refuse_imported(name, at);
     fail(at, "undefined name '" + name + "'");
   }
 
@@ -868,6 +879,55 @@ class Compiler {
         (scope_.python && (name == "random" || name == "uniform"))) {
       return parse_random(at);
     }
+    if (scope_.python && name == "choice") {
+      // Python's choice([a, b, …]) of a list written in place: one of them,
+      // each as likely, by one draw.
+      skip_space();
+      if (!accept("(")) fail(pos_, "expected '('");
+      skip_space();
+      if (!accept("["))
+        fail(pos_,
+             "lsolid reads 'choice' of a list written in place, as choice([-1, "
+             "1])");
+      std::vector<int> options;
+      for (;;) {
+        options.push_back(parse_conditional());
+        skip_space();
+        if (accept(",")) continue;
+        if (!accept("]")) fail(pos_, "expected ']'");
+        break;
+      }
+      skip_space();
+      if (!accept(")")) fail(pos_, "expected ')'");
+      const int count = add(Op::Constant, at);
+      nodes_.back().instruction.value = static_cast<double>(options.size());
+      const int k = add(Op::Floor, at, add(Op::Ran, at, count));
+      int node = options.back();
+      for (std::size_t i = options.size() - 1; i-- > 0;) {
+        const int bound = add(Op::Constant, at);
+        nodes_.back().instruction.value = static_cast<double>(i + 1);
+        const int choice =
+            add(Op::Select, at, add(Op::Less, at, k, bound), options[i]);
+        nodes_.back().c = node;
+        node = choice;
+      }
+      return node;
+    }
+    if (scope_.python && name == "randrange") {
+      // Python's randrange(b) and randrange(a, b): a whole number from a
+      // (0) up to b, b left out.
+      std::vector<int> args = parse_arguments();
+      if (args.empty() || args.size() > 2) {
+        fail(at, "lsolid reads 'randrange' of 1 or 2 arguments");
+      }
+      if (args.size() == 1) {
+        const int zero = add(Op::Constant, at);
+        args.insert(args.begin(), zero);
+      }
+      const int span = binary(Op::Subtract, at, args[1], args[0]);
+      return binary(Op::Add, at, args[0],
+                    add(Op::Floor, at, add(Op::Ran, at, span)));
+    }
     if (scope_.python && name == "randint") {
       // Python's randint(a, b): a whole number from a to b, both included.
       std::vector<int> args = parse_arguments();
@@ -907,7 +967,10 @@ class Compiler {
         break;
       }
     }
-    if (function == nullptr) fail(at, "'" + name + "' is not a function");
+    if (function == nullptr) {
+      refuse_imported(name, at);
+      fail(at, "'" + name + "' is not a function");
+    }
     std::vector<int> args = parse_arguments();
     if (static_cast<int>(args.size()) != function->arity) {
       fail(at, "'" + name + "' takes " + std::to_string(function->arity) +
@@ -1008,6 +1071,21 @@ class Compiler {
     double n = 1.0;
     for (const std::uint32_t d : array.dimensions) n *= d;
     return n;
+  }
+
+  // A name of a Python module that lsolid does not run, refused by name.
+  void refuse_imported(const std::string& name, std::size_t at) const {
+    if (scope_.python_imports == nullptr) return;
+    const auto it = scope_.python_imports->find(name);
+    if (it == scope_.python_imports->end()) return;
+    std::string what = "'";
+    what += name;
+    what += "' comes from Python's module ";
+    what += it->second;
+    what +=
+        ", which lsolid does not run; it reads math and random "
+        "(docs/dialects/lpy.md)";
+    fail(at, what);
   }
 
   const ArrayVariable* array_named(std::string_view name) const {
@@ -1471,7 +1549,12 @@ class Compiler {
         pos_ += name.size();
         if (!accept(",")) break;
       }
-    } else if (word == "print") {
+    } else if (word == "print" || word == "seed" ||
+               (word == "random" &&
+                text_.substr(pos_).starts_with("random.seed("))) {
+      // Printing, and seeding Python's generator (lsolid draws from its
+      // own), change nothing lsolid builds.
+      if (word == "random") pos_ += 7;  // `random.`
       skip_call();
     } else if ((word == kProducedLocal || word == "nproduce") &&
                scope_.locals == nullptr) {

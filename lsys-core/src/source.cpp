@@ -45,6 +45,12 @@ SourceFile::SourceFile(std::string name, std::string text)
   line_starts_ = line_starts(text_);
 }
 
+SourceFile::SourceFile(std::string name, std::string text,
+                       bool from_windows_1252)
+    : SourceFile(std::move(name), std::move(text)) {
+  from_windows_1252_ = from_windows_1252;
+}
+
 SourceFile::SourceFile(std::string name, std::string original, std::string text,
                        std::vector<SourceSpan> spans)
     : name_(std::move(name)),
@@ -239,6 +245,56 @@ std::size_t utf8_sequence_length(std::string_view t, std::size_t i) {
   return 0;
 }
 
+// Windows-1252's characters for bytes 0x80 to 0x9F (0: none there); the
+// bytes from 0xA0 are Latin-1's, the code points of the same number.
+constexpr std::array<char16_t, 32> kWindows1252{
+    0x20AC, 0,      0x201A, 0x0192, 0x201E, 0x2026, 0x2020, 0x2021,
+    0x02C6, 0x2030, 0x0160, 0x2039, 0x0152, 0,      0x017D, 0,
+    0,      0x2018, 0x2019, 0x201C, 0x201D, 0x2022, 0x2013, 0x2014,
+    0x02DC, 0x2122, 0x0161, 0x203A, 0x0153, 0,      0x017E, 0x0178};
+
+// Turns a text that is not UTF-8 into UTF-8, reading it as Windows-1252
+// (an undefined byte becomes U+FFFD); true if it did. UTF-16 and UTF-32
+// are left for check_text to name.
+bool transcode_windows_1252(std::string& text) {
+  const std::string_view t = text;
+  bool valid = true;
+  for (std::size_t i = 0; i < t.size();) {
+    const std::size_t length = utf8_sequence_length(t, i);
+    if (length == 0) {
+      valid = false;
+      break;
+    }
+    i += length;
+  }
+  if (valid || t.find('\0') != std::string_view::npos) return false;
+  std::string out;
+  out.reserve(text.size() + text.size() / 8);
+  const auto put = [&](unsigned c) {
+    if (c < 0x80U) {
+      out += static_cast<char>(c);
+    } else if (c < 0x800U) {
+      out += static_cast<char>(0xC0U | (c >> 6U));
+      out += static_cast<char>(0x80U | (c & 0x3FU));
+    } else {
+      out += static_cast<char>(0xE0U | (c >> 12U));
+      out += static_cast<char>(0x80U | ((c >> 6U) & 0x3FU));
+      out += static_cast<char>(0x80U | (c & 0x3FU));
+    }
+  };
+  for (const char ch : text) {
+    const auto b = static_cast<unsigned char>(ch);
+    if (b >= 0x80U && b < 0xA0U) {
+      const char16_t c = kWindows1252[b - 0x80U];
+      put(c == 0 ? 0xFFFDU : static_cast<unsigned>(c));
+    } else {
+      put(b);
+    }
+  }
+  text = std::move(out);
+  return true;
+}
+
 // `value` in upper-case hexadecimal, `digits` wide.
 std::string hex(unsigned value, int digits) {
   std::array<char, 16> text{};
@@ -272,6 +328,14 @@ void check_text(const SourceFile& source) {
     }
     i += length;
   }
+}
+
+std::shared_ptr<const SourceFile> read_as_windows_1252(
+    std::shared_ptr<const SourceFile> source) {
+  std::string text = source->text();
+  if (!transcode_windows_1252(text)) return source;
+  return std::make_shared<const SourceFile>(source->name(), std::move(text),
+                                            true);
 }
 
 }  // namespace lsys

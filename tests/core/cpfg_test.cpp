@@ -424,6 +424,19 @@ TEST(Cpfg, AnswersQueriesWithThePositionAndFrameBeforeEachStep) {
             "B ?P(0,5,0)");
 }
 
+// cpfg takes a name that nothing defines as a variable of 0, with a
+// warning ("Identifier not previously defined"), and so does lsolid.
+TEST(Cpfg, TakesAnUndefinedNameAsAVariableOfZeroWithAWarning) {
+  const Grammar g = cpfg(
+      "Lsystem: 1\nderivation length: 1\nAxiom: A(2)\n"
+      "A(x) --> B(x + t) C(t)\nendlsystem\n");
+  EXPECT_EQ(to_string(derive(g), g.alphabet), "B(2)C(0)");
+  EXPECT_NE(std::find(g.warnings.begin(), g.warnings.end(),
+                      "line 4: 't' is not defined: taken as a variable that "
+                      "starts at 0, as cpfg takes it"),
+            g.warnings.end());
+}
+
 TEST(Cpfg, RefusesRingLsystemsAtTheirPlace) {
   EXPECT_EQ(cpfg_error("Lsystem: 1\nring lsystem\nAxiom: F\n"),
             "2:1: a ring L-system (contexts that wrap around the string) is "

@@ -56,6 +56,18 @@ TEST(Fractint, ReadsTheSystemItIsToldWithoutRegardToCase) {
             "f[+x]f[-x]");
 }
 
+// A stray `{` after a keyword (Rouse's `Angle 6 {`) is no system's start:
+// the other systems read, and that one is refused at its line.
+TEST(Fractint, ReadsTheOtherSystemsOfAFileWithAStrayBrace) {
+  const std::string file =
+      "Good {\n  Angle 4\n  Axiom F\n  F=F+F\n}\n"
+      "Bad {\n  Angle 6 { ; a comment\n  Axiom F\n}\n";
+  EXPECT_EQ(interpret(fractint(file, "Good")).segments.size(), 4U);
+  EXPECT_EQ(located_error_of([&] { (void)fractint(file, "Bad"); }),
+            "7:11: extra text: a Fractint rule or axiom is one word, without "
+            "blanks");
+}
+
 TEST(Fractint, RefusesToChooseAmongSeveralAndNamesThem) {
   EXPECT_EQ(located_error_of([] { (void)fractint(kTwoSystems); }),
             "1:1: this file holds 2 systems; choose one with --system NAME: "

@@ -129,8 +129,9 @@ TEST(Lpfg, DrawsWithLpfgsNamedModules) {
 
 TEST(Lpfg, RefusesWhatItCannotReadAtItsPlace) {
   EXPECT_EQ(located_error_of([] {
-              (void)lpfg("#include <lpfgall.h>\nmodule A(int);\nAxiom: A(1);\n"
-                         "A(n) : { switch (n) { case 1: produce A(2); } }\n");
+              (void)lpfg(
+                  "#include <lpfgall.h>\nmodule A(int);\nAxiom: A(1);\n"
+                  "A(n) : { switch (n) { case 1: produce A(2); } }\n");
             }),
             "4:10: C++'s 'switch' is not supported: lsolid reads "
             "declarations, assignments, if, for, while, do, produce and "
@@ -151,6 +152,13 @@ TEST(Lpfg, RefusesWhatItCannotReadAtItsPlace) {
             }),
             "2:1: 'struct D': a C++ type; lsolid reads modules of numbers "
             "only (docs/dialects/lpfg.md)");
+  EXPECT_EQ(located_error_of([] {
+              (void)lpfg(
+                  "#include <lpfgall.h>\n#include <time.h>\n"
+                  "FILE* fp;\nAxiom: F(1);\n");
+            }),
+            "3:1: 'FILE* fp': a variable of the C++ type 'FILE'; lsolid reads "
+            "variables of numbers only (docs/dialects/lpfg.md)");
   EXPECT_EQ(located_error_of([] {
               (void)lpfg(
                   "#include <lpfgall.h>\n#include \"mine.h\"\n"

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "lsys/diagnostic.hpp"
+#include "lsys/parser.hpp"
 #include "support/core_helpers.hpp"
 
 namespace lsys {
@@ -66,6 +67,30 @@ TEST(SourceFile, ReportsAMissingFileWithItsName) {
 std::string text_error(const std::string& text) {
   return testing::located_error_of(
       [&] { check_text(SourceFile("t.ls", text)); });
+}
+
+// Older L-system files are Latin-1 or Windows-1252 (comments with accents,
+// box drawing): read so, turned into UTF-8, and said so.
+TEST(SourceFile, ReadsATextThatIsNotUtf8AsWindows1252) {
+  const auto path =
+      std::filesystem::temp_directory_path() / "lsolid_latin1_test.ls";
+  std::ofstream(path, std::ios::binary)
+      << "Axiom: F\n# r\xE9sum\xE9 \x93quoted\x94 \x81\nderivation length: 1\n"
+         "production:\nF --> FF\nendlsystem\n";
+  const auto source = read_as_windows_1252(load_source(path));
+  EXPECT_TRUE(source->from_windows_1252());
+  EXPECT_EQ(source->line_text(2),
+            "# r\u00E9sum\u00E9 \u201Cquoted\u201D \uFFFD");
+  // Other notations' files are read so; lsolid's own must be UTF-8.
+  const Grammar g = parse_grammar(load_source(path), {.dialect = Dialect::Lpy});
+  ASSERT_FALSE(g.warnings.empty());
+  EXPECT_EQ(g.warnings.front(), path.string() +
+                                    " is not UTF-8: read as Windows-1252 "
+                                    "(Latin-1)");
+  EXPECT_THROW((void)parse_grammar(load_source(path), {}), ParseError);
+  std::ofstream(path, std::ios::binary) << "axiom: F\n// r\u00E9sum\u00E9\n";
+  EXPECT_FALSE(read_as_windows_1252(load_source(path))->from_windows_1252());
+  std::filesystem::remove(path);
 }
 
 TEST(SourceFile, AcceptsUtf8TextWithOrWithoutAByteOrderMark) {

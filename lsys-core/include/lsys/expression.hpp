@@ -96,12 +96,21 @@ struct ExpressionScope {
   /// `x if c else y`, `%` (floored) and `//`, `random()` and
   /// `uniform(a, b)`; statements are Python's (parse_python_statements).
   bool python = false;
+  /// When set (cpfg), a name that nothing defines is a variable that
+  /// starts at 0, as cpfg takes it ("Identifier not previously defined"):
+  /// a local of the production, or a global outside one; its name and
+  /// place are added here, for a warning.
+  std::vector<std::pair<std::string, std::size_t>>* undefined = nullptr;
   /// lpfg's C++ (with cpfg): typed declarations, `for`, `+=` and `++`,
   /// `pow`, and, with read_successor, `produce …;` and `nproduce …;`.
   bool c_language = false;
   /// Names that stand for Python's modules `math` and `random` (`import
   /// random as rd`): `rd.uniform(0, 1)` is `uniform(0, 1)`.
   const std::vector<std::string>* python_modules = nullptr;
+  /// Names that L-Py's imports of other modules bind (`np` of `import numpy
+  /// as np`, `deepcopy` of `from copy import deepcopy`), by their module:
+  /// refused where they are used, naming the module.
+  const std::map<std::string, std::string>* python_imports = nullptr;
   /// L-Py's functions of one `return`, which calls compile in place.
   const std::map<std::string, PythonFunction>* python_functions = nullptr;
   /// When set, a Python body builds its successor as it runs (L-Py's

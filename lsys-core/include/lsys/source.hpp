@@ -40,6 +40,9 @@ class SourceFile {
  public:
   /// @param name what diagnostics print as the file name.
   SourceFile(std::string name, std::string text);
+  /// A text that load_source read as Windows-1252 (Latin-1 and its
+  /// kin), not being UTF-8, and turned into UTF-8.
+  SourceFile(std::string name, std::string text, bool from_windows_1252);
   /// A preprocessed text: `spans` cover `text` in order, without gaps.
   /// @pre the spans start at 0, follow each other and end at text's end;
   ///   a verbatim span's bytes are the original's.
@@ -61,6 +64,10 @@ class SourceFile {
   /// The line and column in original() of a byte offset of text().
   /// @pre `offset <= text().size()`.
   [[nodiscard]] SourceLocation location(std::size_t offset) const;
+  /// True when the file was not UTF-8 and was read as Windows-1252.
+  [[nodiscard]] bool from_windows_1252() const noexcept {
+    return from_windows_1252_;
+  }
   /// The text of a line of original() without its line break.
   /// @pre `1 <= line <= line_count()`.
   [[nodiscard]] std::string_view line_text(int line) const;
@@ -76,6 +83,7 @@ class SourceFile {
   std::string original_;
   std::vector<SourceSpan> spans_;
   std::vector<std::size_t> line_starts_;
+  bool from_windows_1252_ = false;
 };
 
 /// The largest `.ls` file lsolid reads, 16 MiB: thousands of times the
@@ -97,5 +105,13 @@ inline constexpr std::size_t kMaxSourceBytes = std::size_t{16} << 20U;
 ///   UTF-8 byte 0xFF`, `control character U+001B`, `the file is UTF-16
 ///   (little-endian); save it as UTF-8`).
 void check_text(const SourceFile& source);
+
+/// The text itself if it is UTF-8 (or UTF-16 or UTF-32, which check_text
+/// names); otherwise the text read as Windows-1252, as older L-system files
+/// of other programs were written (Latin-1 comments, box drawing), turned
+/// into UTF-8 (SourceFile::from_windows_1252), an undefined byte becoming
+/// U+FFFD.
+[[nodiscard]] std::shared_ptr<const SourceFile> read_as_windows_1252(
+    std::shared_ptr<const SourceFile> source);
 
 }  // namespace lsys

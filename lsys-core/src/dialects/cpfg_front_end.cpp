@@ -310,7 +310,7 @@ Grammar read_with_view(
   CpfgView view;
   std::optional<std::filesystem::path> view_path = find_view(*source, options);
   if (view_path) {
-    const auto view_source = load_source(*view_path);
+    const auto view_source = read_as_windows_1252(load_source(*view_path));
     check_text(*view_source);
     view = read_cpfg_view(*view_source);
     if (!ignored_headers.empty() && view.function_set.empty() &&

@@ -204,6 +204,9 @@ struct Draft {
   std::unordered_set<std::string> variables;
   /// L-Py: the names `import math as m` and `import random as rd` bind.
   std::vector<std::string> python_modules;
+  /// Names bound by L-Py's imports of modules other than math and random
+  /// (ExpressionScope::python_imports).
+  std::map<std::string, std::string> python_imports;
   /// L-Py's functions of one `return`, by name.
   std::map<std::string, PythonFunction> python_functions;
   /// L-Py's lists of numbers at the top level (`color = [1, 3, 2]`): the

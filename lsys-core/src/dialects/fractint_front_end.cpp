@@ -156,6 +156,13 @@ class FractintReader : TextScan {
       const Range line = trim(raw);
       const std::size_t brace = find_in(line, "{");
       if (brace == std::string::npos || brace == line.begin) continue;
+      // A `{` after a keyword or in a rule is a stray character (Rouse's
+      // `Angle 6 {`), not a system's start.
+      if (match_words(line.begin, line.end, "angle") ||
+          match_words(line.begin, line.end, "axiom") ||
+          find_in(Range{line.begin, brace}, "=") != std::string::npos) {
+        continue;
+      }
       fail(line.begin, "a system starts inside '" + original_name(name) +
                            " {' (line " +
                            std::to_string(source_->location(name.begin).line) +

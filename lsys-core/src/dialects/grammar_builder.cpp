@@ -116,6 +116,12 @@ class GrammarBuilder : TextScan {
       warning += ") is left out: it draws nothing in a solid";
       grammar_.warnings.push_back(std::move(warning));
     }
+    for (const auto& [name, at] : undefined_) {
+      grammar_.warnings.push_back(
+          "line " + std::to_string(source_->location(at).line) + ": '" + name +
+          "' is not defined: taken as a variable that starts at 0, as cpfg "
+          "takes it");
+    }
     note_variables();
     for (const std::string& name : given_defines_) {
       if (used_constants_.count(name) == 0 && !file_defines_.count(name)) {
@@ -366,6 +372,7 @@ class GrammarBuilder : TextScan {
       scope.python = true;
       scope.python_modules = &draft_.python_modules;
       scope.python_functions = &draft_.python_functions;
+      scope.python_imports = &draft_.python_imports;
     }
     const Expression e = parse_expression(source_, r.begin, r.end, scope);
     if (!e.is_constant()) {
@@ -889,6 +896,7 @@ class GrammarBuilder : TextScan {
       scope.python = true;
       scope.python_modules = &draft_.python_modules;
       scope.python_functions = &draft_.python_functions;
+      scope.python_imports = &draft_.python_imports;
       scope.locals = locals;
       scope.globals = &grammar_.globals;
       scope.arrays = &arrays_;
@@ -900,6 +908,9 @@ class GrammarBuilder : TextScan {
     scope.arrays = &arrays_;
     scope.cpfg = true;
     scope.c_language = draft_.syntax.c_language;
+    if (!scope.c_language && !draft_.syntax.mathjs) {
+      scope.undefined = &undefined_;
+    }
     if (scope.c_language) scope.python_functions = &draft_.python_functions;
     scope.functions = draft_.functions;
     return scope;
@@ -1419,6 +1430,8 @@ class GrammarBuilder : TextScan {
   };
   std::map<SymbolId, LeftOut> left_out_;
   std::vector<ArrayVariable> arrays_;  // cpfg's, in grammar_.globals
+  // cpfg's names that nothing defined, taken as variables of 0.
+  std::vector<std::pair<std::string, std::size_t>> undefined_;
   // The values an L-Py predecessor requires, by slot (pattern).
   std::vector<std::pair<std::uint32_t, double>> pattern_values_;
   static constexpr double kMostArrayElements = 1e6;

@@ -109,11 +109,14 @@ const std::vector<RefusedName> kRefused = {
     {"MouseInsPos", "the mouse"},
 };
 
-// C's headers and lpfg's own, which an lpfg file includes; any other
-// include is text lsolid does not have.
-constexpr std::array<std::string_view, 7> kHeaders{
-    "lpfgall.h", "math.h",  "stdlib.h", "stdio.h",
-    "cmath",     "cstdlib", "iostream"};
+// lpfg's header and the system's, which an lpfg file includes for names
+// lsolid knows or refuses where they are used; a file of the model's own
+// (`#include "data.h"`) is text lsolid does not have.
+constexpr std::array<std::string_view, 24> kHeaders{
+    "lpfgall.h", "math.h",  "stdlib.h",  "stdio.h", "string.h", "time.h",
+    "assert.h",  "float.h", "limits.h",  "cmath",   "cstdlib",  "cstdio",
+    "cstring",   "ctime",   "cassert",   "climits", "iostream", "fstream",
+    "sstream",   "vector",  "algorithm", "string",  "GL/gl.h",  "GL/glu.h"};
 
 constexpr std::array<std::string_view, 7> kTypes{
     "float", "double", "int", "bool", "long", "unsigned", "const"};
@@ -309,7 +312,8 @@ class LpfgReader : TextScan {
     const Range body{open, close + 1};
     const std::string_view h = view(head);
     if (h.starts_with("struct ") || h.starts_with("class ") ||
-        h.starts_with("union ") || h.starts_with("enum ")) {
+        h.starts_with("union ") || h.starts_with("enum ") ||
+        h.starts_with("typedef ") || h == "struct" || h == "typedef") {
       fail(head.begin,
            quoted(h,
                   ": a C++ type; lsolid reads modules of numbers only "
@@ -469,6 +473,15 @@ class LpfgReader : TextScan {
       while (k < s.end && is_blank(text_[k])) ++k;
     }
     if (!typed) {
+      std::size_t e = i;
+      while (e < s.end && is_word_char(text_[e])) ++e;
+      if (e > i && e < s.end &&
+          (is_blank(text_[e]) || text_[e] == '*' || text_[e] == '&')) {
+        fail(i, quoted(t, ": a variable of the C++ type '" +
+                              std::string(view(Range{i, e})) +
+                              "'; lsolid reads variables of numbers only "
+                              "(docs/dialects/lpfg.md)"));
+      }
       fail(i, quoted(t,
                      ": expected a setting, a module declaration, a "
                      "variable, the axiom or a rule"));

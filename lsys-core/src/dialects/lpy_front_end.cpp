@@ -207,6 +207,9 @@ class LpyReader : TextScan {
     draft_.syntax.radians = true;
     draft_.syntax.python = true;
     draft_.syntax.several_module_predecessors = true;
+    // L-Py matches a module by its name and its number of parameters:
+    // `S` and `S(1)` may both stand in one file.
+    draft_.syntax.fixed_arity = false;
     // PlantGL's turtle reads the parameters it knows and ignores the rest
     // (L-Py's predefinedmodules.cpp: `-(a, t)` turns by a).
     draft_.syntax.extra_turtle_parameters = true;
@@ -471,12 +474,12 @@ class LpyReader : TextScan {
         text.ends_with(")")) {
       return;
     }
-    if (text == "import math" || text == "import random" ||
-        text.starts_with("from math import ") ||
-        text.starts_with("from random import ") ||
-        text.starts_with("from openalea.plantgl.all import ") ||
-        text.starts_with("from openalea.plantgl.math import ")) {
-      return;  // PlantGL's names stay unknown: refused where they are used
+    if (text.starts_with("import ") || text.starts_with("from ")) {
+      // An import defines names and runs nothing lsolid needs: what the
+      // file uses of a module other than math and random (PlantGL's
+      // Vector3, copy's deepcopy, sys.path) is refused where it is used.
+      note_import(line);
+      return;
     }
     if (read_function(line)) return;
     // L-Py's hooks, run as cpfg runs Start: and its kin.
@@ -517,6 +520,42 @@ class LpyReader : TextScan {
       return;
     }
     define(line);
+  }
+
+  // The names `import a.b as c`, `import a, b` and `from m import x, y as z`
+  // bind, by module (Draft::python_imports); math and random are read.
+  void note_import(Range line) {
+    const std::string_view text = view(line);
+    const bool from = text.starts_with("from ");
+    std::string module;
+    Range names = line;
+    if (from) {
+      const std::size_t at = find_in(line, " import ");
+      if (at == std::string::npos) return;
+      module = std::string(view(trim(Range{line.begin + 5, at})));
+      names = trim(Range{at + 8, line.end});
+    } else {
+      names = trim(Range{line.begin + 7, line.end});
+    }
+    if (module == "math" || module == "random") return;
+    for (const Range& piece : split_top(names, ',')) {
+      std::string_view item = view(trim(piece));
+      std::string_view bound = item;
+      if (const std::size_t as = item.find(" as ");
+          as != std::string_view::npos) {
+        bound = item.substr(as + 4);
+        item = item.substr(0, as);
+      } else if (!from) {
+        bound = item.substr(0, item.find('.'));
+      }
+      const std::string of = from ? module : std::string(item);
+      if (of == "math" || of == "random" || bound == "*") continue;
+      while (!bound.empty() && bound.front() == ' ') bound.remove_prefix(1);
+      while (!bound.empty() && bound.back() == ' ') bound.remove_suffix(1);
+      if (is_identifier(bound)) {
+        draft_.python_imports.emplace(std::string(bound), of);
+      }
+    }
   }
 
   // A function body as L-Py's examples write them: a docstring, then
@@ -694,8 +733,14 @@ class LpyReader : TextScan {
         (text_[value.begin] == '\'' || text_[value.begin] == '"')) {
       return;  // a string: metadata such as __authors__
     }
-    if (value.end >= value.begin + 2 && text_[value.begin] == '[' &&
-        text_[value.end - 1] == ']') {
+    const bool tuple = value.end >= value.begin + 2 &&
+                       text_[value.begin] == '(' &&
+                       text_[value.end - 1] == ')' &&
+                       find_top(Range{value.begin + 1, value.end - 1}, ",") !=
+                           std::string::npos &&
+                       find_top(value, ",") == std::string::npos;
+    if (tuple || (value.end >= value.begin + 2 && text_[value.begin] == '[' &&
+                  text_[value.end - 1] == ']')) {
       // A list; its elements are read as constants by the grammar builder
       // (a list of lists or of other things fails there, at its place).
       Draft::PythonList list{name, {}};

@@ -424,17 +424,22 @@ TEST(Cpfg, AnswersQueriesWithThePositionAndFrameBeforeEachStep) {
             "B ?P(0,5,0)");
 }
 
-// cpfg takes a name that nothing defines as a variable of 0, with a
-// warning ("Identifier not previously defined"), and so does lsolid.
+// cpfg takes a name that nothing defines as 0, with a warning
+// ("Identifier not previously defined"), and so does lsolid.
 TEST(Cpfg, TakesAnUndefinedNameAsAVariableOfZeroWithAWarning) {
   const Grammar g = cpfg(
       "Lsystem: 1\nderivation length: 1\nAxiom: A(2)\n"
       "A(x) --> B(x + t) C(t)\nendlsystem\n");
   EXPECT_EQ(to_string(derive(g), g.alphabet), "B(2)C(0)");
   EXPECT_NE(std::find(g.warnings.begin(), g.warnings.end(),
-                      "line 4: 't' is not defined: taken as a variable that "
-                      "starts at 0, as cpfg takes it"),
+                      "line 4: 't' is not defined: taken as 0, as cpfg "
+                      "takes it"),
             g.warnings.end());
+  // A statement that assigns it makes it a variable from there on.
+  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 1\nAxiom: A(2)\n"
+                         "A(x) : {y = u + 1; u = 5;} * --> B(y, u)\n"
+                         "endlsystem\n"),
+            "B(1,5)");
 }
 
 TEST(Cpfg, RefusesRingLsystemsAtTheirPlace) {

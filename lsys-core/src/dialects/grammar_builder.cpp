@@ -119,8 +119,7 @@ class GrammarBuilder : TextScan {
     for (const auto& [name, at] : undefined_) {
       grammar_.warnings.push_back(
           "line " + std::to_string(source_->location(at).line) + ": '" + name +
-          "' is not defined: taken as a variable that starts at 0, as cpfg "
-          "takes it");
+          "' is not defined: taken as 0, as cpfg takes it");
     }
     note_variables();
     for (const std::string& name : given_defines_) {

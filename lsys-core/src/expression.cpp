@@ -793,15 +793,11 @@ class Compiler {
         return node;
       }
     }
-    if (scope_.undefined != nullptr &&
-        (scope_.locals != nullptr || scope_.globals != nullptr)) {
+    if (scope_.undefined != nullptr) {
+      // cpfg adds the name with the value 0; read before anything assigns
+      // it, it is 0 (an assignment then makes it a variable, store_for).
       scope_.undefined->emplace_back(name, at);
-      const Instruction store =
-          scope_.locals != nullptr ? new_local(name, at) : new_global(name, at);
-      const int node =
-          add(store.op == Op::StoreGlobal ? Op::Global : Op::Parameter, at);
-      nodes_.back().instruction.slot = store.slot;
-      return node;
+      return add(Op::Constant, at);
     }
     refuse_imported(name, at);
     fail(at, "undefined name '" + name + "'");

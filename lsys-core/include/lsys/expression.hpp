@@ -96,10 +96,9 @@ struct ExpressionScope {
   /// `x if c else y`, `%` (floored) and `//`, `random()` and
   /// `uniform(a, b)`; statements are Python's (parse_python_statements).
   bool python = false;
-  /// When set (cpfg), a name that nothing defines is a variable that
-  /// starts at 0, as cpfg takes it ("Identifier not previously defined"):
-  /// a local of the production, or a global outside one; its name and
-  /// place are added here, for a warning.
+  /// When set (cpfg), a name that nothing defines reads as 0, as cpfg
+  /// takes it ("Identifier not previously defined"); its name and place
+  /// are added here, for a warning.
   std::vector<std::pair<std::string, std::size_t>>* undefined = nullptr;
   /// lpfg's C++ (with cpfg): typed declarations, `for`, `+=` and `++`,
   /// `pow`, and, with read_successor, `produce …;` and `nproduce …;`.

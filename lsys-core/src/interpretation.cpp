@@ -426,15 +426,25 @@ class Interpreter {
     if (params.size() > 3 && params[3] >= 0.0) {
       state_.width = params[3] * settings_.width_scale;
     }
-    if (glm::length(turtle.position() - p0) <=
-        kShortestMove * std::max(1.0, glm::length(p0))) {
+    if (!moved_from(p0)) {
       ++skeleton_.zero_length_segments;
       return;
     }
-    skeleton_.segments.push_back(
-        Segment{p0, turtle.position(), start,
-                generation_width(state_.width, generation), state_.color,
-                state_.last_segment});
+    push_segment(p0, start, generation_width(state_.width, generation));
+  }
+
+  // Whether the turtle has moved from p0 far enough for a segment to have
+  // a direction (draw says why).
+  bool moved_from(const glm::dvec3& p0) const {
+    return glm::length(state_.turtle.position() - p0) >
+           kShortestMove * std::max(1.0, glm::length(p0));
+  }
+
+  // A segment from p0 to the turtle, joined to the last one drawn.
+  void push_segment(const glm::dvec3& p0, double start, double end) {
+    skeleton_.segments.push_back(Segment{p0, state_.turtle.position(), start,
+                                         end, state_.color,
+                                         state_.last_segment});
     state_.last_segment =
         static_cast<std::int32_t>(skeleton_.segments.size() - 1);
   }
@@ -1215,19 +1225,13 @@ class Interpreter {
     // does one that moves it by a few ulps (vlab's sympodial plant draws
     // F(l) with l computed to 10⁻¹⁶): a tube that short has no direction,
     // and its mitres made its neighbour cut itself.
-    const bool moved =
-        length != 0.0 && glm::length(turtle.position() - p0) >
-                             kShortestMove * std::max(1.0, glm::length(p0));
+    const bool moved = length != 0.0 && moved_from(p0);
     if (!moved) ++skeleton_.zero_length_segments;
     // Inside a generalized cylinder `F` only moves (cpfg's start_spline:
     // "not to interpret f and F"); the cylinder draws the curve.
     if (moved && !state_.in_cylinder) {
-      skeleton_.segments.push_back(
-          Segment{p0, turtle.position(), start,
-                  generation_width(state_.width, generation) * scale,
-                  state_.color, state_.last_segment});
-      state_.last_segment =
-          static_cast<std::int32_t>(skeleton_.segments.size() - 1);
+      push_segment(p0, start,
+                   generation_width(state_.width, generation) * scale);
     }
     if (state_.elasticity != 0.0) {
       turtle.bend(state_.tropism, state_.elasticity);

@@ -176,9 +176,30 @@ TEST(Cpfg, PlacesErrorsAfterAnExpandedMacroWhereTheyStandInTheFile) {
             "4:10: unclosed '(' in the call of macro 'A'");
   EXPECT_EQ(cpfg_error("Lsystem: 1\n#if 1\nAxiom: F\n"),
             "2:1: '#if' without '#endif'");
-  EXPECT_EQ(cpfg_error("#include \"leaf.l\"\nLsystem: 1\nAxiom: F\n"),
-            "1:1: #include is not supported: copy the included file's text "
-            "into this one");
+  EXPECT_EQ(cpfg_error("#include \"leaf.h\"\nLsystem: 1\nAxiom: F\n"),
+            "1:1: #include \"leaf.h\": no such file beside this one (leaf.h)");
+  EXPECT_EQ(cpfg_error("#include <stdio.h>\nLsystem: 1\nAxiom: F\n"),
+            "1:1: #include <stdio.h>: a header lsolid does not have");
+}
+
+TEST_F(CpfgFiles, ReadsAnIncludedFileBesideItWithItsMacrosAndConstants) {
+  // As Adel's models keep their parameters in a header of the object.
+  write("params.h",
+        "/* parameters */\n#define N 3\n#define GROW(x) F(x)\n"
+        "#ifndef LEN\n#define LEN 2\n#endif\n");
+  write("plant.l",
+        "#include \"params.h\"\nLsystem: 1\nderivation length: N\n"
+        "Axiom: A(1)\nA(x) --> GROW(LEN*x)A(x+1)\nendlsystem\n");
+  const Grammar g = read("plant.l");
+  EXPECT_EQ(g.settings.derivation_length, 3);
+  EXPECT_EQ(to_string(derive(g), g.alphabet), "F(2)F(4)F(6)A(4)");
+  write("broken.h", "#define N 3\n#if N\n");
+  write("broken.l", "#include \"broken.h\"\nLsystem: 1\nAxiom: F\n");
+  EXPECT_EQ(located_error_of([&] { (void)read("broken.l"); }),
+            "2:1: '#if' without '#endif'");
+  write("self.l", "#include \"self.l\"\nLsystem: 1\nAxiom: F\n");
+  EXPECT_EQ(located_error_of([&] { (void)read("self.l"); }),
+            "1:1: #include nested too deeply (a file that includes itself?)");
 }
 
 TEST(Cpfg, ContinuesAStatementOnALineThatStartsWithATab) {

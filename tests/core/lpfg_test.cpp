@@ -164,8 +164,8 @@ TEST(Lpfg, RefusesWhatItCannotReadAtItsPlace) {
                   "#include <lpfgall.h>\n#include \"mine.h\"\n"
                   "Axiom: F(1);\n");
             }),
-            "2:1: #include is not supported: copy the included file's text "
-            "into this one");
+            "2:1: #include \"mine.h\": no such file beside this one "
+            "(mine.h)");
 }
 
 }  // namespace

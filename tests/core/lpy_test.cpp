@@ -529,5 +529,16 @@ TEST(Lpy, TakesTheTurtlesSettingsFromTheEditorsBlock) {
   expect_near(s.segments[1].p1, {-1, 0, 1});
 }
 
+TEST(Lpy, ReadsRangeEnumerationsAndLambdasAsConstantsAndFunctions) {
+  const Grammar g =
+      lpy("Forward, Backward, Growth = range(3)\n"
+          "width = lambda order, k : 10. / (order + 1) + k\n"
+          "Axiom: A(Growth)\nderivation length: 1\nproduction:\n"
+          "A(x) --> F(width(x, Backward))\nendlsystem\n");
+  EXPECT_EQ(to_string(derive(g), g.alphabet), "F(4.333333333333334)");
+  EXPECT_EQ(located_error_of([] { (void)lpy("A, B = range(3)\nAxiom: F\n"); }),
+            "1:8: range(3) gives 3 values to 2 names");
+}
+
 }  // namespace
 }  // namespace lsys

@@ -358,6 +358,9 @@ TEST(Parser, ReadsAStarAmongContextModulesAsAnyOneModule) {
 TEST(Parser, ReportsEachMistakeWithItsOwnMessage) {
   EXPECT_EQ(located_error("angel: 20\nF"), "1:1: unknown setting 'angel'");
   EXPECT_EQ(located_error("angel = 20\nF"), "1:1: unknown setting 'angel'");
+  EXPECT_EQ(located_error("target: Lsystem\npanel name: L-system\n"),
+            "1:1: unknown setting 'target': this is a vlab control panel, "
+            "not an L-system; give the object's L-system file");
   EXPECT_EQ(located_error("\u03C9: F\nF F[+F]F"),
             "2:1: missing arrow: a production needs '\u2192' or '->' "
             "between predecessor and successor");

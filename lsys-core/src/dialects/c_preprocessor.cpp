@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <set>
@@ -74,7 +75,9 @@ class Preprocessor {
   Preprocessor(const SourceFile& source, const PreprocessOptions& options)
       : source_(source),
         options_(options),
-        clean_(blank_comments(source, options.line_comments)) {
+        clean_(blank_comments(source, options.line_comments)),
+        macros_(own_macros_),
+        constants_(own_constants_) {
     for (const std::string& d : options.defines) {
       overridden_.insert(d.substr(0, d.find('=')));
     }
@@ -82,6 +85,17 @@ class Preprocessor {
       macros_[name] = Macro{std::nullopt, body};
     }
   }
+
+  // A file included by `parent`: C's macros are one table for the
+  // translation unit, so the included file's `#define`s hold after it.
+  Preprocessor(const SourceFile& source, Preprocessor& parent)
+      : source_(source),
+        options_(parent.options_),
+        clean_(blank_comments(source, parent.options_.line_comments)),
+        macros_(parent.macros_),
+        constants_(parent.constants_),
+        overridden_(parent.overridden_),
+        include_depth_(parent.include_depth_ + 1) {}
 
   std::shared_ptr<const SourceFile> run() {
     std::size_t begin = 0;
@@ -457,15 +471,56 @@ class Preprocessor {
       fail(begin, "#error " + std::string(trim(rest)));
     }
     if (word == "include") {
-      std::string_view name = trim(rest);
-      if (name.size() > 2) name = name.substr(1, name.size() - 2);
-      for (const std::string& header : options_.ignored_headers) {
-        if (name == header) return;
-      }
+      include(begin, trim(rest));
+      return;
     }
-    fail(begin,
-         "#include is not supported: copy the included file's text into "
-         "this one");
+    fail(begin, "unknown directive '#" + word + "'");
+  }
+
+  // `#include "name"` reads the file beside this one, as vlabcpp finds a
+  // model's own headers in the object's folder (Adel's `.h` parameter
+  // files); its text is an expansion of the directive, so that what the
+  // front end finds wrong in it is placed at the `#include`, and its own
+  // directives are errors placed in it. `<name>` is a system header: only
+  // those the notation names (lpfg's `lpfgall.h`) are known.
+  void include(std::size_t begin, std::string_view what) {
+    const bool quoted =
+        what.size() > 2 && what.front() == '"' && what.back() == '"';
+    const bool system =
+        what.size() > 2 && what.front() == '<' && what.back() == '>';
+    if (!quoted && !system) {
+      fail(begin, "expected \"file\" or <file> after #include");
+    }
+    const std::string name(what.substr(1, what.size() - 2));
+    for (const std::string& header : options_.ignored_headers) {
+      if (name == header) return;
+    }
+    if (system) {
+      std::string message = "#include <";
+      message += name;
+      message += ">: a header lsolid does not have";
+      fail(begin, std::move(message));
+    }
+    if (include_depth_ >= kMostIncludeDepth) {
+      fail(begin, "#include nested too deeply (a file that includes itself?)");
+    }
+    const std::filesystem::path path =
+        std::filesystem::path(source_.name()).parent_path() / name;
+    std::error_code ignored;
+    if (!std::filesystem::is_regular_file(path, ignored)) {
+      std::string message = "#include \"";
+      message += name;
+      message += "\": no such file beside this one (";
+      message += path.string();
+      message += ")";
+      fail(begin, std::move(message));
+    }
+    const std::shared_ptr<const SourceFile> included =
+        read_as_windows_1252(load_source(path));
+    check_text(*included);
+    std::shared_ptr<const SourceFile> text =
+        Preprocessor(*included, *this).run();
+    emit_expansion(begin, text->text());
   }
 
   void define(std::size_t begin, std::size_t end, std::size_t i) {
@@ -633,6 +688,7 @@ class Preprocessor {
   }
 
   static constexpr int kMaxDepth = 200;
+  static constexpr int kMostIncludeDepth = 16;
   static constexpr std::size_t kMaxExpansion = std::size_t{1} << 20U;
 
   const SourceFile& source_;
@@ -640,11 +696,14 @@ class Preprocessor {
   std::string clean_;
   std::string out_;
   std::vector<SourceSpan> spans_;
-  std::map<std::string, Macro> macros_;
-  std::map<std::string, std::string> constants_;
+  std::map<std::string, Macro> own_macros_;
+  std::map<std::string, std::string> own_constants_;
+  std::map<std::string, Macro>& macros_;
+  std::map<std::string, std::string>& constants_;
   std::set<std::string> overridden_;
   std::vector<Condition> conditions_;
   int depth_ = 0;
+  int include_depth_ = 0;
 };
 
 }  // namespace

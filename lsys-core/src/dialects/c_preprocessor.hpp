@@ -33,21 +33,24 @@ struct PreprocessOptions {
   bool line_comments = true;
   /// Headers whose `#include <…>` or `#include "…"` is dropped (lpfg's
   /// `lpfgall.h` and C's `math.h`, whose names lsolid knows already);
-  /// any other `#include` is an error.
+  /// another `#include "…"` reads the file beside the source, and another
+  /// `#include <…>` is an error.
   std::vector<std::string> ignored_headers;
 };
 
 /// Runs the C preprocessor that cpfg runs on its `.l` and `.v` files
 /// (docs/dialects/cpfg.md): `/* */` and `//` comments, `#define` with and
 /// without parameters, `#undef`, `#if`/`#ifdef`/`#ifndef`/`#elif`/`#else`/
-/// `#endif`, `\` line splices. A macro whose body is a number, a
-/// parenthesised expression of numbers and such macros, or one such macro
-/// is a constant: its `#define` line stays and its uses are not expanded,
+/// `#endif`, `\` line splices, `#include "file"` of a file beside the
+/// source (its text an expansion of the directive). A macro whose body is a
+/// number, a parenthesised expression of numbers and such macros, or one such
+/// macro is a constant: its `#define` line stays and its uses are not expanded,
 /// so that the grammar reads it as a constant (`--define`, the viewer's
 /// controls) with the same value as textual expansion gives. Other
 /// directive lines become empty; every line stays on its line, and
 /// diagnostics point to the original text (SourceFile's spans).
-/// @throws ParseError at `#include` (not supported), an unknown directive,
+/// @throws ParseError at an `#include` of a system header or of a file
+///   that is not there (and in the included file), an unknown directive,
 ///   `#error`, an unbalanced `#if`, a malformed `#define`, or a macro
 ///   called with the wrong number of arguments.
 [[nodiscard]] std::shared_ptr<const SourceFile> preprocess(

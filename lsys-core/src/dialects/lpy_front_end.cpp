@@ -214,8 +214,8 @@ class LpyReader : TextScan {
     // (L-Py's predefinedmodules.cpp: `-(a, t)` turns by a).
     draft_.syntax.extra_turtle_parameters = true;
     draft_.warnings = std::move(grammar_warnings_);
-    draft_.constants = {
-        {"True", 1.0}, {"False", 0.0}, {"pi", 3.14159265358979323846}};
+    draft_.constants.insert(
+        {{"True", 1.0}, {"False", 0.0}, {"pi", 3.14159265358979323846}});
     Grammar grammar = build_grammar(*this, std::move(draft_), options_);
     if (const auto leaf = grammar.alphabet.find("~l")) {
       grammar.surfaces[*leaf] = plantgl_leaf();
@@ -712,6 +712,10 @@ class LpyReader : TextScan {
     if (equals != std::string::npos) {
       const auto names = split_top(Range{line.begin, equals}, ',');
       const auto values = split_top(Range{equals + 1, line.end}, ',');
+      if (names.size() > 1 && values.size() == 1 &&
+          define_range(names, trim(values.front()))) {
+        return;
+      }
       if (names.size() > 1 && names.size() == values.size()) {
         for (std::size_t i = 0; i < names.size(); ++i) {
           const Range name = trim(names[i]);
@@ -732,6 +736,11 @@ class LpyReader : TextScan {
     if (!value.empty() &&
         (text_[value.begin] == '\'' || text_[value.begin] == '"')) {
       return;  // a string: metadata such as __authors__
+    }
+    if (view(value).starts_with("lambda ") ||
+        view(value).starts_with("lambda:")) {
+      define_lambda(line, name, value);
+      return;
     }
     const bool tuple = value.end >= value.begin + 2 &&
                        text_[value.begin] == '(' &&
@@ -754,6 +763,66 @@ class LpyReader : TextScan {
       return;
     }
     draft_.defines.emplace_back(name, trim(Range{equals + 1, line.end}));
+  }
+
+  // `Forward, Backward, Growth = range(3)`, Python's enumeration idiom:
+  // the names are the constants 0, 1, 2. False when the value is not a
+  // `range` of a whole number.
+  bool define_range(const std::vector<Range>& names, Range value) {
+    const std::string_view v = view(value);
+    if (!v.starts_with("range(") || v.back() != ')') return false;
+    const std::string count(view(trim(Range{value.begin + 6, value.end - 1})));
+    if (count.empty() || !std::all_of(count.begin(), count.end(), [](char c) {
+          return std::isdigit(static_cast<unsigned char>(c)) != 0;
+        })) {
+      return false;
+    }
+    if (std::stoul(count) != names.size()) {
+      std::string message = "range(";
+      message += count;
+      message += ") gives ";
+      message += count;
+      message += " values to ";
+      message += std::to_string(names.size());
+      message += " names";
+      fail(value.begin, std::move(message));
+    }
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      const Range name = trim(names[i]);
+      if (!is_identifier(view(name))) {
+        refuse_python(name.begin, "'" + std::string(view(name)) + "'");
+      }
+      draft_.constants[std::string(view(name))] = static_cast<double>(i);
+    }
+    return true;
+  }
+
+  // `f = lambda a, b: expression`, a function of one return as `def`
+  // gives (the L-Py tutorials' archimodels define their laws so).
+  void define_lambda(Range line, Range name, Range value) {
+    const Range rest{value.begin + 6, value.end};
+    const std::size_t colon = find_top(rest, ":");
+    if (colon == std::string::npos) {
+      refuse_python(line.begin, "'" + std::string(view(line)) + "'");
+    }
+    PythonFunction f;
+    const Range list = trim(Range{rest.begin, colon});
+    if (!list.empty()) {
+      for (const Range& p : split_top(list, ',')) {
+        const std::string parameter(view(trim(p)));
+        if (!is_identifier(parameter)) {
+          refuse_python(line.begin, "'" + std::string(view(line)) + "'");
+        }
+        f.parameters.push_back(parameter);
+      }
+    }
+    const Range body = trim(Range{colon + 1, value.end});
+    if (body.empty()) {
+      refuse_python(line.begin, "'" + std::string(view(line)) + "'");
+    }
+    f.begin = body.begin;
+    f.end = body.end;
+    draft_.python_functions[std::string(view(name))] = std::move(f);
   }
 
   // The editor's scalars, `scalars = [('n', 'Integer', 3, 1, 20), …]` (or

@@ -405,7 +405,17 @@ class LsReader : TextScan {
     }
     if (find_equals(line) == std::string::npos) {
       if (text_[i] == ':' && text_.substr(i, 3) != "::=") {
-        fail(word.begin, "unknown setting '" + std::string(name) + "'");
+        std::string message = "unknown setting '";
+        message += name;
+        message += "'";
+        // A vlab object's control panel sits beside its L-system and
+        // shares its `.l` ending (vlab's panel manual).
+        if (name == "panel name" || name == "target") {
+          message +=
+              ": this is a vlab control panel, not an L-system; give the "
+              "object's L-system file";
+        }
+        fail(word.begin, std::move(message));
       }
       return;
     }

@@ -488,5 +488,21 @@ TEST(Parser, RefusesASystemNameForANotationOfOneSystem) {
             "read as ls (--dialect)");
 }
 
+TEST(Parser, ReadsJonLeechsLsysStartAxiomAndItsMaxgenAndDeltaMacros) {
+  // ABOP fig. 1.24a as typed up for lsys: 5 generations of F -> 5 F.
+  const Grammar g = parse(
+      "/* figure 1.24a */\n#define maxgen 5\n#define delta 25.7\n\n"
+      "START : F\np1 : F -> F[+F]F[-F]F\n");
+  EXPECT_EQ(g.settings.derivation_length, 5);
+  EXPECT_DOUBLE_EQ(g.settings.angle_deg, 25.7);
+  EXPECT_EQ(interpret(g).segments.size(), 3125U);
+  // The file's own settings win; without START the macros are constants.
+  const Grammar own = parse("#define maxgen 5\nn: 2\nSTART : F\nF -> FF\n");
+  EXPECT_EQ(own.settings.derivation_length, 2);
+  const Grammar plain = parse("#define maxgen 5\naxiom: F\nF -> FF\n");
+  EXPECT_EQ(plain.settings.derivation_length, 1);
+  EXPECT_EQ(plain.constants.at("maxgen"), 5.0);
+}
+
 }  // namespace
 }  // namespace lsys

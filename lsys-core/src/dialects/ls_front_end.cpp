@@ -28,12 +28,13 @@ struct Spelling {
 
 // Every spelling of every setting; longest first so that `width increment`
 // wins over `width`. A space matches any run of blanks.
-constexpr std::array<Spelling, 45> kSpellings = [] {
-  std::array<Spelling, 45> s{{
+constexpr std::array<Spelling, 46> kSpellings = [] {
+  std::array<Spelling, 46> s{{
       {"axiom", Key::Axiom},
       {"\u03C9", Key::Axiom},
       {"premise", Key::Axiom},
       {"initial value", Key::Axiom},
+      {"start", Key::Axiom},  // Jon Leech's lsys (finish_lsys)
       {"n", Key::DerivationLength},
       {"derivation length", Key::DerivationLength},
       {"iterations", Key::DerivationLength},
@@ -147,6 +148,7 @@ class LsReader : TextScan {
   Grammar run() {
     sort_lines();
     if (variant_ == LsVariant::Lowclouds) finish_lowclouds();
+    if (variant_ == LsVariant::Ls) finish_lsys();
     return build_grammar(*this, std::move(draft_), options_);
   }
 
@@ -187,6 +189,45 @@ class LsReader : TextScan {
       }
     }
     return std::nullopt;
+  }
+
+  // Jon Leech's lsys (1989), which many ABOP transcriptions were written
+  // for, gives the axiom as `START : F` and reads two macros as settings:
+  // `#define maxgen 5` the derivation length and `#define delta 25.7` the
+  // angle in degrees (its README). A file with a `START` axiom takes them
+  // so unless it sets them itself; the macros stay constants too.
+  void finish_lsys() {
+    const auto axiom =
+        std::find_if(draft_.settings.begin(), draft_.settings.end(),
+                     [&](const SettingText& t) {
+                       if (t.key != Key::Axiom) return false;
+                       std::string key;
+                       for (char c : view(t.key_range)) key += lower(c);
+                       return trim_blanks(key) == "start";
+                     });
+    if (axiom == draft_.settings.end()) return;
+    const auto has = [&](Key key) {
+      return std::any_of(draft_.settings.begin(), draft_.settings.end(),
+                         [&](const SettingText& t) { return t.key == key; });
+    };
+    const bool has_length = has(Key::DerivationLength);
+    const bool has_angle = has(Key::Angle) || has(Key::AngleFactor);
+    for (const auto& [name, value] : draft_.defines) {
+      if (view(name) == "maxgen" && !has_length) {
+        draft_.settings.push_back(
+            SettingText{Key::DerivationLength, {}, name, value});
+      } else if (view(name) == "delta" && !has_angle) {
+        draft_.settings.push_back(SettingText{Key::Angle, {}, name, value});
+      }
+    }
+  }
+
+  static std::string_view trim_blanks(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t'))
+      s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t'))
+      s.remove_suffix(1);
+    return s;
   }
 
   // `name:` or `name =` (a setting's start, known or not).

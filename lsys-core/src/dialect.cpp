@@ -7,6 +7,8 @@
 #include <cctype>
 #include <utility>
 
+#include "dialects/front_ends.hpp"
+
 namespace lsys {
 namespace {
 
@@ -151,6 +153,7 @@ Dialect detect_dialect(std::string_view text, std::string_view file_name) {
   bool lsystem = false;
   bool lowclouds = false;
   bool axiom_seen = false;
+  bool lparser_keywords = false;
   for_each_line(text, [&](std::string_view line) {
     if (line.empty()) return true;
     if (first && line.front() == ';') return true;
@@ -174,6 +177,11 @@ Dialect detect_dialect(std::string_view text, std::string_view file_name) {
       fractint = true;
       return false;
     }
+    if (first && line.front() != '#' &&
+        dialects::is_lparser_keyword_line(line)) {
+      lparser_keywords = true;
+      return false;
+    }
     if (numbers >= 0 && line.front() != '#') {
       numbers = is_number_line(line) ? numbers + 1 : -1;
     }
@@ -189,7 +197,7 @@ Dialect detect_dialect(std::string_view text, std::string_view file_name) {
            !(lsystem && !named_ls);
   });
   if (fractint) return Dialect::Fractint;
-  if (numbers >= 2) return Dialect::Lparser;
+  if (numbers >= 2 || lparser_keywords) return Dialect::Lparser;
   if (lsystem && !named_ls) return Dialect::Cpfg;
   if (lowclouds) return Dialect::Lowclouds;
   if (axiom && production && !named_ls && !named_l) return Dialect::Lpy;

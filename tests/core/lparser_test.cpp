@@ -51,6 +51,33 @@ TEST(Lparser, ReadsTheThreeNumbersTheAxiomAndTheRulesUpToTheAt) {
   EXPECT_EQ(s.segments[0].color, 2);
 }
 
+TEST(Lparser, ReadsLparser5sKeywordFormAndIsDetectedByIt) {
+  const std::string text =
+      "# Lparser example file\r\n\r\nrecursion 2\r\nangle 90\r\n"
+      "thickness 10\r\nshape 1\r\nswitch_yz 1\r\n\r\n"
+      "axiom cF\r\n\r\nrule F = F+F\r\nrule F = FF\r\n@\r\nnot read\r\n";
+  EXPECT_EQ(detect_dialect(text, "tree.ls"), Dialect::Lparser);
+  const Grammar g = lparser(text);
+  EXPECT_EQ(g.settings.derivation_length, 2);
+  EXPECT_EQ(g.settings.angle_deg, 90.0);
+  EXPECT_EQ(to_string(derive(g), g.alphabet), "cF+F+F+F");
+  ASSERT_EQ(g.warnings.size(), 2U);
+  EXPECT_EQ(g.warnings[0],
+            "Lparser's 'shape' (how it writes its output) "
+            "is left out");
+  const Skeleton s = interpret(g);
+  ASSERT_EQ(s.segments.size(), 4U);
+  EXPECT_DOUBLE_EQ(s.segments[0].start_diameter, 10.0);
+  EXPECT_EQ(located_error_of(
+                [] { (void)lparser("recursion 2\naxiom F\nrules F = FF\n"); }),
+            "3:1: unknown Lparser keyword 'rules': expected recursion, "
+            "angle, thickness, axiom or rule");
+  EXPECT_EQ(located_error_of(
+                [] { (void)lparser("recursion 2\naxiom F\nrule FF = F\n"); }),
+            "3:6: expected a rule such as 'rule F = FF' (one character, "
+            "'=', the successor)");
+}
+
 TEST(Lparser, MakesEachSegmentAsThickAsAShareOfItsOwnLength) {
   const Skeleton s = interpret(lparser("0\n90\n10\nF'FZF(50)!F?F\n@\n"));
   ASSERT_EQ(s.segments.size(), 6U);

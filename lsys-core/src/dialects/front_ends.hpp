@@ -73,6 +73,10 @@ enum class LsVariant {
 void refuse_parameterised_braces(const Grammar& grammar,
                                  std::string_view message);
 
+/// True when a line opens Lparser 5's keyword form: `recursion` and a
+/// number (`recursion 10`).
+[[nodiscard]] bool is_lparser_keyword_line(std::string_view line);
+
 /// Reads Laurens Lapré's Lparser files (docs/dialects/lparser.md).
 /// @throws ParseError as read_ls.
 [[nodiscard]] Grammar read_lparser(std::shared_ptr<const SourceFile> source,

@@ -9,7 +9,10 @@
 // character winning; `@` ends the file. Only the first word of a line
 // counts, so a comment may follow it. Parameters belong to the text, not
 // to the module: a rule for `f` rewrites `f(200)` too, and the `(200)`
-// stays behind its successor (`f=z` makes `z(200)`).
+// stays behind its successor (`f=z` makes `z(200)`). Lparser 5 also reads
+// a keyword form, each setting named on its line (`recursion 10`, `angle
+// 45`, `thickness 15`, `axiom FA`, `rule A = F[+A]A`), which its example
+// files and their ports use.
 #include <cmath>
 #include <cstdlib>
 #include <optional>
@@ -93,13 +96,69 @@ std::string clean_text(const std::string& text) {
   return out;
 }
 
+// Blanks `#` comment lines and everything after the line that starts
+// with `@`, keeping offsets: the keyword form reads whole lines.
+std::string clean_keyword_text(const std::string& text) {
+  std::string out = text;
+  bool ended = false;
+  std::size_t start = 0;
+  while (start < out.size()) {
+    std::size_t end = out.find('\n', start);
+    if (end == std::string::npos) end = out.size();
+    std::size_t i = start;
+    while (i < end && (out[i] == ' ' || out[i] == '\t')) ++i;
+    if (!ended && i < end && out[i] == '@') ended = true;
+    if (ended || (i < end && out[i] == '#')) {
+      for (std::size_t k = start; k < end; ++k) out[k] = ' ';
+    }
+    start = end + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+bool is_lparser_keyword_line(std::string_view line) {
+  if (!line.starts_with("recursion")) return false;
+  line.remove_prefix(9);
+  if (line.empty() || (line.front() != ' ' && line.front() != '\t'))
+    return false;
+  while (!line.empty() && (line.front() == ' ' || line.front() == '\t'))
+    line.remove_prefix(1);
+  return !line.empty() &&
+         (std::isdigit(static_cast<unsigned char>(line.front())) != 0 ||
+          line.front() == '.');
+}
+
+namespace {
+
+bool keyword_form(const std::string& text) {
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::string_view line(text.data() + start, end - start);
+    while (!line.empty() && (line.front() == ' ' || line.front() == '\t'))
+      line.remove_prefix(1);
+    if (!line.empty() && line.front() != '#' && line.front() != '\r') {
+      return is_lparser_keyword_line(line);
+    }
+    start = end + 1;
+  }
+  return false;
+}
+
 class LparserReader : TextScan {
  public:
   LparserReader(std::shared_ptr<const SourceFile> source,
-                const ParseOptions& options)
-      : TextScan(source, clean_text(source->text())), options_(options) {}
+                const ParseOptions& options, bool keywords)
+      : TextScan(source, keywords ? clean_keyword_text(source->text())
+                                  : clean_text(source->text())),
+        options_(options),
+        keywords_(keywords) {}
 
   Grammar run() {
+    if (keywords_) return run_keywords();
     std::vector<Range> words;
     for (const Range& line : lines(Range{0, text_.size()})) {
       const Range word = trim(line);
@@ -113,24 +172,11 @@ class LparserReader : TextScan {
                              "starts with three numbers");
     }
     Draft draft;
+    set_notation(draft);
     Settings& s = draft.defaults;
-    const double depth = number(words[0], header[0]);
-    if (depth < 0 || depth > 10000 || depth != std::floor(depth)) {
-      fail(words[0].begin,
-           depth != std::floor(depth)
-               ? "a fractional recursion depth (Lparser's growing mode) is "
-                 "not supported: give a whole number"
-               : "expected a whole number from 0 to 10000");
-    }
-    s.derivation_length = static_cast<int>(depth);
-    s.derivation_length_offset = words[0].begin;
+    set_depth(s, words[0]);
     s.angle_deg = number(words[1], header[1]);
-    const double thickness = number(words[2], header[2]);
-    if (thickness < 0) fail(words[2].begin, "expected a non-negative number");
-    s.initial_width = thickness / 100.0;
-    s.widths_relative_to_length = true;
-    s.step = kStep;
-    s.initial_color = kColor;
+    set_thickness(s, words[2]);
     if (words.size() < 4) {
       fail(words[2].end, "expected the axiom after the three numbers");
     }
@@ -147,18 +193,111 @@ class LparserReader : TextScan {
                          std::nullopt,
                          {Range{rule.begin + 2, rule.end}}});
     }
-    draft.syntax = Syntax{.contexts_and_conditions = false,
-                          .probability_after_successor = false,
-                          .parameter_lists = true,
-                          .cut_and_wildcard = false,
-                          .fixed_arity = false};
-    draft.symbols = kSymbols;
     Grammar grammar = build_grammar(*this, std::move(draft), options_);
     pass_parameters_on(grammar);
     return grammar;
   }
 
  private:
+  static bool is_blank_char(char c) {
+    return c == ' ' || c == '\t' || c == '\r';
+  }
+
+  Range trimmed(Range r) const {
+    while (r.begin < r.end && is_blank_char(text_[r.begin])) ++r.begin;
+    while (r.end > r.begin && is_blank_char(text_[r.end - 1])) --r.end;
+    return r;
+  }
+
+  void set_depth(Settings& s, Range word) const {
+    const double depth = number(word, "the recursion depth");
+    if (depth < 0 || depth > 10000 || depth != std::floor(depth)) {
+      fail(word.begin,
+           depth != std::floor(depth)
+               ? "a fractional recursion depth (Lparser's growing mode) is "
+                 "not supported: give a whole number"
+               : "expected a whole number from 0 to 10000");
+    }
+    s.derivation_length = static_cast<int>(depth);
+    s.derivation_length_offset = word.begin;
+  }
+
+  void set_thickness(Settings& s, Range word) const {
+    const double thickness =
+        number(word, "the thickness (a percentage of length)");
+    if (thickness < 0) fail(word.begin, "expected a non-negative number");
+    s.initial_width = thickness / 100.0;
+  }
+
+  static void set_notation(Draft& draft) {
+    Settings& s = draft.defaults;
+    s.widths_relative_to_length = true;
+    s.step = kStep;
+    s.initial_color = kColor;
+    draft.syntax = Syntax{.contexts_and_conditions = false,
+                          .probability_after_successor = false,
+                          .parameter_lists = true,
+                          .cut_and_wildcard = false,
+                          .fixed_arity = false};
+    draft.symbols = kSymbols;
+  }
+
+  // Lparser 5's keyword form: `recursion`, `angle`, `thickness`, `axiom`,
+  // `rule X = successor`; `min_thickness`, `shape` and `switch_yz` choose
+  // how Lparser writes its output file, and are left out.
+  Grammar run_keywords() {
+    Draft draft;
+    set_notation(draft);
+    Settings& s = draft.defaults;
+    for (const Range& l : lines(Range{0, text_.size()})) {
+      const Range line = trimmed(l);
+      if (line.empty()) continue;
+      std::size_t i = line.begin;
+      while (i < line.end && !is_blank_char(text_[i])) ++i;
+      const std::string word(view(Range{line.begin, i}));
+      const Range rest = trimmed(Range{i, line.end});
+      if (word != "rule" && word != "axiom" && rest.empty()) {
+        fail(line.end, "expected a value after '" + word + "'");
+      }
+      if (word == "recursion") {
+        set_depth(s, rest);
+      } else if (word == "angle") {
+        s.angle_deg = number(rest, "the angle");
+      } else if (word == "thickness") {
+        set_thickness(s, rest);
+      } else if (word == "min_thickness" || word == "shape" ||
+                 word == "switch_yz") {
+        draft.warnings.push_back("Lparser's '" + word +
+                                 "' (how it writes its output) is left out");
+      } else if (word == "axiom") {
+        if (draft.axiom) fail(line.begin, "a second axiom");
+        if (rest.empty()) fail(line.end, "expected the axiom after 'axiom'");
+        draft.axiom = rest;
+      } else if (word == "rule") {
+        const std::size_t equals = find_in(rest, "=");
+        const Range predecessor = equals == std::string::npos
+                                      ? rest
+                                      : trimmed(Range{rest.begin, equals});
+        if (equals == std::string::npos ||
+            predecessor.end - predecessor.begin != 1) {
+          fail(rest.begin,
+               "expected a rule such as 'rule F = FF' (one character, '=', "
+               "the successor)");
+        }
+        draft.productions.push_back(ProductionText{
+            predecessor, std::nullopt, {trimmed(Range{equals + 1, rest.end})}});
+      } else {
+        fail(line.begin,
+             "unknown Lparser keyword '" + word +
+                 "': expected recursion, angle, thickness, axiom or rule");
+      }
+    }
+    if (!draft.axiom) fail(text_.size(), "no axiom: give one as 'axiom F'");
+    Grammar grammar = build_grammar(*this, std::move(draft), options_);
+    pass_parameters_on(grammar);
+    return grammar;
+  }
+
   double number(Range word, const char* what) const {
     const std::string text(view(word));
     char* end = nullptr;
@@ -206,13 +345,15 @@ class LparserReader : TextScan {
   }
 
   const ParseOptions& options_;
+  bool keywords_;
 };
 
 }  // namespace
 
 Grammar read_lparser(std::shared_ptr<const SourceFile> source,
                      const ParseOptions& options) {
-  return LparserReader(std::move(source), options).run();
+  const bool keywords = keyword_form(source->text());
+  return LparserReader(std::move(source), options, keywords).run();
 }
 
 }  // namespace lsys::dialects

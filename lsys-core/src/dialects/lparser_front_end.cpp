@@ -69,9 +69,10 @@ const std::vector<SymbolCommand> kSymbols = {
 constexpr double kStep = 100.0;
 constexpr int kColor = 2;
 
-// Blanks `#` comment lines, everything after a line's first word, and
-// everything after the line that starts with `@`, keeping offsets.
-std::string clean_text(const std::string& text) {
+// Blanks `#` comment lines, everything after the line that starts with
+// `@`, and (for the numeric form, not the keyword form, which reads whole
+// lines) everything after a line's first word, keeping offsets.
+std::string clean_text(const std::string& text, bool whole_lines) {
   std::string out = text;
   bool ended = false;
   std::size_t start = 0;
@@ -80,10 +81,12 @@ std::string clean_text(const std::string& text) {
     if (end == std::string::npos) end = out.size();
     std::size_t i = start;
     while (i < end && (out[i] == ' ' || out[i] == '\t')) ++i;
-    const bool comment = start < end && out[start] == '#';
+    const bool comment = i < end && out[i] == '#';
     if (!ended && !comment && i < end && out[i] == '@') ended = true;
     if (ended || comment) {
       i = start;
+    } else if (whole_lines) {
+      i = end;
     } else {
       while (i < end && out[i] != ' ' && out[i] != '\t' && out[i] != '#' &&
              out[i] != '\r') {
@@ -91,26 +94,6 @@ std::string clean_text(const std::string& text) {
       }
     }
     for (; i < end; ++i) out[i] = ' ';
-    start = end + 1;
-  }
-  return out;
-}
-
-// Blanks `#` comment lines and everything after the line that starts
-// with `@`, keeping offsets: the keyword form reads whole lines.
-std::string clean_keyword_text(const std::string& text) {
-  std::string out = text;
-  bool ended = false;
-  std::size_t start = 0;
-  while (start < out.size()) {
-    std::size_t end = out.find('\n', start);
-    if (end == std::string::npos) end = out.size();
-    std::size_t i = start;
-    while (i < end && (out[i] == ' ' || out[i] == '\t')) ++i;
-    if (!ended && i < end && out[i] == '@') ended = true;
-    if (ended || (i < end && out[i] == '#')) {
-      for (std::size_t k = start; k < end; ++k) out[k] = ' ';
-    }
     start = end + 1;
   }
   return out;
@@ -152,8 +135,7 @@ class LparserReader : TextScan {
  public:
   LparserReader(std::shared_ptr<const SourceFile> source,
                 const ParseOptions& options, bool keywords)
-      : TextScan(source, keywords ? clean_keyword_text(source->text())
-                                  : clean_text(source->text())),
+      : TextScan(source, clean_text(source->text(), keywords)),
         options_(options),
         keywords_(keywords) {}
 

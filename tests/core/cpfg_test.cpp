@@ -197,6 +197,12 @@ TEST_F(CpfgFiles, ReadsAnIncludedFileBesideItWithItsMacrosAndConstants) {
   write("broken.l", "#include \"broken.h\"\nLsystem: 1\nAxiom: F\n");
   EXPECT_EQ(located_error_of([&] { (void)read("broken.l"); }),
             "2:1: '#if' without '#endif'");
+  // cpfg includes other `.l` files for sub-L-systems.
+  write("sub.l", "Lsystem: 2\nAxiom: G\nendlsystem\n");
+  write("main.l", "Lsystem: 1\nAxiom: F\nendlsystem\n#include \"sub.l\"\n");
+  EXPECT_EQ(located_error_of([&] { (void)read("main.l"); }),
+            "4:1: a second L-system (a sub-L-system; the first is on line 1) "
+            "is not supported");
   write("self.l", "#include \"self.l\"\nLsystem: 1\nAxiom: F\n");
   EXPECT_EQ(located_error_of([&] { (void)read("self.l"); }),
             "1:1: #include nested too deeply (a file that includes itself?)");

@@ -1225,6 +1225,15 @@ class GrammarBuilder : TextScan {
       }
       const int id = static_cast<int>(setting.key);
       if (const auto it = seen.find(id); it != seen.end()) {
+        if (setting.key == Key::LsystemLabel) {
+          // cpfg reads the next `Lsystem:` as a sub-L-system (often through
+          // an `#include` of another `.l`), which `?` and `$` call.
+          std::string message =
+              "a second L-system (a sub-L-system; the first is on line ";
+          message += std::to_string(source_->location(it->second).line);
+          message += ") is not supported";
+          fail(setting.key_range.begin, std::move(message));
+        }
         fail(setting.key_range.begin,
              "duplicate setting '" + key_text + "' (first set on line " +
                  std::to_string(source_->location(it->second).line) + ")");

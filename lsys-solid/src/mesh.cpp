@@ -23,6 +23,16 @@ Box bounds(const TriangleMesh& mesh) {
   return box;
 }
 
+Box bounds(const std::vector<Part>& parts) {
+  Box box;
+  for (const Part& part : parts) {
+    const Box b = bounds(part.mesh);
+    box.min = glm::min(box.min, b.min);
+    box.max = glm::max(box.max, b.max);
+  }
+  return box;
+}
+
 double signed_volume(const TriangleMesh& mesh) {
   double six_volume = 0.0;
   for (const auto& t : mesh.triangles) {

@@ -10,6 +10,8 @@
 #include <numbers>
 #include <optional>
 
+#include "lsolid/parts.hpp"
+
 namespace lsolid {
 namespace {
 

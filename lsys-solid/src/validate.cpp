@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: MIT
 //
 // Topological checks by counting edges; the geometric ones (degenerate
-// faces, self-intersections, orientation) are in cgal/validate_cgal.cpp.
+// faces, self-intersections, orientation) are in cgal/exact_checks.cpp.
 #include "lsolid/validate.hpp"
 
 #include <fmt/format.h>

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "lsolid/errors.hpp"
+#include "lsolid/parts.hpp"
 #include "support/mesh_checks.hpp"
 
 namespace lsolid {

@@ -8,6 +8,7 @@
 #include <glm/common.hpp>
 
 #include "lsolid/boolean.hpp"
+#include "lsolid/parts.hpp"
 #include "support/mesh_checks.hpp"
 
 namespace lsolid {

@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "lsolid/mesh.hpp"
-#include "lsolid/parts.hpp"
 
 namespace lsolid {
 

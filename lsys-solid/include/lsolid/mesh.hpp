@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <string>
 #include <vector>
 
 namespace lsolid {
@@ -26,12 +27,26 @@ struct Box {
   [[nodiscard]] glm::dvec3 size() const noexcept { return max - min; }
 };
 
+/// A closed, outward-oriented solid of the model, before the union.
+struct Part {
+  TriangleMesh mesh;
+  std::string label;  ///< what it is, for messages: "tube of segments 3-7"
+  /// The turtle's colour index (ABOP's `'`): that of its first segment or
+  /// its polygon; a joint takes its parent's. All it was built from has
+  /// this colour when the parts were built with PartOptions::split_colors
+  /// (parts.hpp).
+  int color = 0;
+};
+
 /// The bounding box of the vertices that triangles use.
 [[nodiscard]] Box bounds(const TriangleMesh& mesh);
 
 /// The enclosed volume by the divergence theorem: positive for a closed mesh
 /// with outward normals.
 [[nodiscard]] double signed_volume(const TriangleMesh& mesh);
+
+/// The bounding box of all parts.
+[[nodiscard]] Box bounds(const std::vector<Part>& parts);
 
 /// Appends `part` to `mesh` (a disjoint union of surfaces, no boolean).
 void append(TriangleMesh& mesh, const TriangleMesh& part);

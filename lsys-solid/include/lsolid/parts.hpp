@@ -12,16 +12,6 @@
 
 namespace lsolid {
 
-/// A closed, outward-oriented solid of the model, before the union.
-struct Part {
-  TriangleMesh mesh;
-  std::string label;  ///< what it is, for messages: "tube of segments 3-7"
-  /// The turtle's colour index (ABOP's `'`): that of its first segment or
-  /// its polygon; a joint takes its parent's. All it was built from has
-  /// this colour when PartOptions::split_colors is set.
-  int color = 0;
-};
-
 /// How to mesh the skeleton.
 struct PartOptions {
   /// The thinnest tube's width; leaf plates are 5% thicker than such a
@@ -82,9 +72,6 @@ struct PartSet {
 /// cutting itself.
 [[nodiscard]] PartSet build_parts(const lsys::Skeleton& skeleton,
                                   const PartOptions& options = {});
-
-/// The bounding box of all parts.
-[[nodiscard]] Box bounds(const std::vector<Part>& parts);
 
 /// The number of sides of a tube of this radius whose flat sides touch the
 /// circle and whose corners stand out from it by at most `tolerance_mm`

@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include "lsolid/parts.hpp"
+#include "lsolid/mesh.hpp"
 #include "lsolid/print_settings.hpp"
 #include "lsys/skeleton.hpp"
 

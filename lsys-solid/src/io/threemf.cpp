@@ -4,8 +4,6 @@
 // 3MF through lib3mf 1.8.1, the version Debian 12 packages: its C interface
 // (NMR_DLLInterfaces.h; lib3mf 2.x's C++ bindings are not packaged). The
 // only translation unit that includes lib3mf.
-#include "mesh_3mf.hpp"
-
 #include <Model/COM/NMR_DLLInterfaces.h>
 #include <fmt/format.h>
 
@@ -17,7 +15,9 @@
 #include <string_view>
 #include <utility>
 
+#include "formats.hpp"
 #include "lsolid/errors.hpp"
+#include "material_names.hpp"
 
 namespace lsolid {
 namespace {
@@ -54,22 +54,6 @@ void check(LIB3MFRESULT result, PLib3MFBase* instance, const char* what) {
 constexpr const char* kPrusaConfigPath = "/Metadata/Slic3r_PE_model.config";
 constexpr const char* kPrusaConfigRelationship =
     "http://schemas.slic3r.org/3mf/2017/06/model-config";
-
-std::string material_name(int color) {
-  return "colour " + std::to_string(color);
-}
-
-// The colour index a material name gives, or 0 for names lsolid did not
-// write.
-int color_of_name(const std::string& name) {
-  int color = 0;
-  if (name.starts_with("colour ")) {
-    const char* first = name.data() + 7;
-    const char* last = name.data() + name.size();
-    if (std::from_chars(first, last, color).ec != std::errc()) color = 0;
-  }
-  return color;
-}
 
 // lib3mf gives the object, the build and its item random UUIDs (3MF's
 // production extension), so two runs wrote different files. These are
@@ -255,7 +239,7 @@ std::string encode_3mf(const std::vector<ColoredMesh>& volumes,
   for (auto& [color, index] : material) {
     const Rgb rgb = palette_color(color, colors);
     check(lib3mf_basematerial_addmaterialutf8(group.get(),
-                                              material_name(color).c_str(),
+                                              material_name(color, ' ').c_str(),
                                               rgb.r, rgb.g, rgb.b, &index),
           group.get(), "adding a material");
     // lib3mf 1.8.1 writes the colour added with the material with alpha 0,
@@ -290,7 +274,7 @@ std::string encode_3mf(const std::vector<ColoredMesh>& volumes,
         "value=\"ModelPart\"/>\n"
         "   <metadata type=\"volume\" key=\"extruder\" value=\"{}\"/>\n"
         "  </volume>\n",
-        first, all.mesh.triangles.size() - 1, material_name(color), i + 1);
+        first, all.mesh.triangles.size() - 1, material_name(color, ' '), i + 1);
   }
   Handle mesh;
   *mesh.out() = add_mesh(model.get(), all, group_id, material, "lsolid model");
@@ -391,7 +375,7 @@ std::vector<ColoredMesh> decode_3mf(const std::filesystem::path& path) {
       if (lib3mf_basematerial_getnameutf8(group.get(), index, name.data(),
                                           needed + 1, &needed) == LIB3MF_OK) {
         name.resize(needed);
-        color = color_of_name(name);
+        color = color_of_material(name);
       }
     }
     colors.emplace(key, color);

@@ -6,31 +6,25 @@
 // et al. 2012, build their junctions), and the exact self-intersection test
 // that decides whether pieces stitched at their rings may stay one operand of
 // the union. Both use exact predicates on the doubles given (EPICK).
-// Preconditions stay on, as exceptions (see boolean_cgal.cpp).
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+// Preconditions stay on, as exceptions (see boolean.cpp).
+#include "kernel.hpp"
+
+#include "part_queries.hpp"
+
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
 
 #include <map>
 
 #include "conversion.hpp"
-#include "junction_geometry.hpp"
 #include "lsolid/errors.hpp"
 
 namespace lsolid {
-namespace {
-
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Mesh = CGAL::Surface_mesh<Point>;
-namespace PMP = CGAL::Polygon_mesh_processing;
-
-}  // namespace
+namespace {}  // namespace
 
 std::vector<std::array<std::uint32_t, 3>> convex_hull_triangles(
     const std::vector<glm::dvec3>& points) {
-  std::vector<Point> input;
+  std::vector<InexactPoint> input;
   input.reserve(points.size());
   // The hull copies the coordinates exactly; they lead back to the indices.
   std::map<std::array<double, 3>, std::uint32_t> index;
@@ -40,7 +34,7 @@ std::vector<std::array<std::uint32_t, 3>> convex_hull_triangles(
     index.emplace(std::array<double, 3>{p.x, p.y, p.z},
                   static_cast<std::uint32_t>(i));
   }
-  Mesh hull;
+  InexactMesh hull;
   CGAL::convex_hull_3(input.begin(), input.end(), hull);
   std::vector<std::array<std::uint32_t, 3>> out;
   if (hull.number_of_faces() < 4) return out;
@@ -49,7 +43,7 @@ std::vector<std::array<std::uint32_t, 3>> convex_hull_triangles(
     std::size_t k = 0;
     for (const auto v : CGAL::vertices_around_face(hull.halfedge(f), hull)) {
       if (k == 3) return {};  // convex_hull_3 triangulates; never a polygon
-      const Point& p = hull.point(v);
+      const InexactPoint& p = hull.point(v);
       t[k++] = index.at({p.x(), p.y(), p.z()});
     }
     out.push_back(t);
@@ -59,11 +53,12 @@ std::vector<std::array<std::uint32_t, 3>> convex_hull_triangles(
 
 std::vector<std::pair<std::uint32_t, std::uint32_t>>
 intersecting_triangle_pairs(const TriangleMesh& mesh) {
-  const Mesh sm = to_surface_mesh<Mesh>(mesh);
+  const InexactMesh sm = to_surface_mesh<InexactMesh>(mesh);
   if (sm.number_of_faces() != mesh.triangles.size()) {
     throw GeometryError("stitched parts do not form an oriented surface");
   }
-  std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
+  std::vector<std::pair<InexactMesh::Face_index, InexactMesh::Face_index>>
+      pairs;
   PMP::self_intersections(sm, std::back_inserter(pairs));
   // to_surface_mesh adds the faces in order, so their indices are the
   // triangles' indices.

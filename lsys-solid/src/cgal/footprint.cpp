@@ -7,8 +7,11 @@
 // and no two rings cross, so no point is constructed), whose faces inside
 // an odd number of rings cover the footprint exactly (the nesting count of
 // CGAL's polygon_triangulation example).
+#include "kernel.hpp"
+
+#include "lsolid/footprint.hpp"
+
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
@@ -17,23 +20,21 @@
 #include <unordered_map>
 
 #include "lsolid/errors.hpp"
-#include "lsolid/footprint.hpp"
 
 namespace lsolid {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 struct FaceInfo {
   int nesting = -1;  // how many rings enclose the face; -1: not yet known
 };
 using VertexBase =
-    CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, Kernel>;
+    CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, Inexact>;
 using FaceBase = CGAL::Constrained_triangulation_face_base_2<
-    Kernel, CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>>;
+    Inexact, CGAL::Triangulation_face_base_with_info_2<FaceInfo, Inexact>>;
 // No_constraint_intersection_requiring_constructions_tag: rings that cross
 // are a bug upstream, reported as such, not mended with new points.
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<
-    Kernel, CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>,
+    Inexact, CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>,
     CGAL::No_constraint_intersection_requiring_constructions_tag>;
 using Face = Cdt::Face_handle;
 
@@ -65,7 +66,7 @@ TriangleMesh extrude(const Footprint& footprint, double height_mm) {
   Cdt cdt;
   std::size_t points = 0;
   for (const std::vector<glm::dvec2>& ring : footprint.rings) {
-    std::vector<Kernel::Point_2> polyline;
+    std::vector<Inexact::Point_2> polyline;
     polyline.reserve(ring.size());
     for (const glm::dvec2& p : ring) polyline.emplace_back(p.x, p.y);
     points += ring.size();

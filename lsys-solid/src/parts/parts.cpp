@@ -29,11 +29,11 @@
 #include <string>
 #include <unordered_map>
 
-#include "cgal/junction_geometry.hpp"
-#include "cgal/plate_geometry.hpp"
+#include "cgal/part_queries.hpp"
+#include "cgal/polygon_union.hpp"
 #include "lsolid/errors.hpp"
 #include "lsolid/validate.hpp"
-#include "thickened_sheet.hpp"
+#include "parts/thickened_sheet.hpp"
 #include "union_find.hpp"
 
 namespace lsolid {
@@ -1100,8 +1100,8 @@ class PartBuilder {
 
   // Leaf polygons that lie in one plane and overlap or share edges (a fan
   // of triangles, layered petals) are united in that plane and each region
-  // of the union becomes one plate (plate_cgal.cpp says why); the others
-  // become a plate each.
+  // of the union becomes one plate (cgal/polygon_union.cpp says why); the
+  // others become a plate each.
   void add_plates() {
     const auto& polygons = skeleton_.polygons;
     std::vector<std::optional<Outline>> outlines;
@@ -1464,16 +1464,6 @@ double tube_corner_radius(double radius_mm, double tolerance_mm) {
 
 double plate_thickness_mm(double wall_mm, double tolerance_mm) {
   return 2.0 * kPlateMargin * tube_corner_radius(wall_mm / 2.0, tolerance_mm);
-}
-
-Box bounds(const std::vector<Part>& parts) {
-  Box box;
-  for (const Part& part : parts) {
-    const Box b = bounds(part.mesh);
-    box.min = glm::min(box.min, b.min);
-    box.max = glm::max(box.max, b.max);
-  }
-  return box;
 }
 
 PartSet build_parts(const lsys::Skeleton& skeleton,

@@ -10,6 +10,8 @@
 // the guard is far dearer than the others, so this driver asks it only for the
 // collapse it is about to make, and on a refusal requeues the vertex with its
 // next-best halfedge.
+#include "lsolid/decimate.hpp"
+
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Decimater/BaseDecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/ModAspectRatioT.hh>
@@ -33,7 +35,6 @@
 #include <vector>
 
 #include "intersection_guard.hpp"
-#include "lsolid/decimate.hpp"
 #include "lsolid/errors.hpp"
 #include "plane_quadric.hpp"
 #include "surface_distance.hpp"

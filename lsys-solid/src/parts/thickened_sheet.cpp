@@ -7,7 +7,7 @@
 // into slivers and rounding back to doubles folds: a single 8 × 4 leaf
 // crashed CGAL's corefinement. Offsetting the whole sheet along its normals
 // gives one closed part instead, with no faces that meet face on face.
-#include "thickened_sheet.hpp"
+#include "parts/thickened_sheet.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +18,7 @@
 #include <utility>
 #include <vector>
 
-#include "cgal/junction_geometry.hpp"
+#include "cgal/part_queries.hpp"
 #include "lsolid/errors.hpp"
 
 namespace lsolid {

@@ -13,11 +13,13 @@
 // whose diagonal runs through the model's centre, at 45 degrees. Along the
 // Koch island's mitred corners, on that diagonal, it made two vertices a
 // rounding error apart, which collapsed to one when rounded to doubles.
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include "kernel.hpp"
+
+#include "lsolid/cut.hpp"
+
 #include <CGAL/Polygon_mesh_processing/clip.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <array>
 #include <cmath>
@@ -26,15 +28,10 @@
 #include <vector>
 
 #include "conversion.hpp"
-#include "lsolid/cut.hpp"
 #include "lsolid/errors.hpp"
 
 namespace lsolid {
 namespace {
-
-using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
-using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
-namespace PMP = CGAL::Polygon_mesh_processing;
 
 // A tetrahedron holding everything of `mesh` above z_mm, with its base in
 // that plane and its other faces far outside the mesh. The base is
@@ -42,7 +39,7 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 // from its centre) and the apex 10 reaches up: at any height h of the mesh
 // above z_mm the cross-section's inradius is 10 reaches (1 - h/(10 reach))
 // >= 9 reaches, so no side face touches the mesh.
-Mesh cutter_above(const TriangleMesh& mesh, double z_mm) {
+ExactMesh cutter_above(const TriangleMesh& mesh, double z_mm) {
   glm::dvec3 lo(1e300);
   glm::dvec3 hi(-1e300);
   for (const glm::dvec3& p : mesh.vertices) {
@@ -53,15 +50,15 @@ Mesh cutter_above(const TriangleMesh& mesh, double z_mm) {
   const double reach =
       std::max(glm::length(hi - lo), std::fabs(z_mm - centre.z)) + 1.0;
   const double r = 20.0 * reach;  // circumradius: twice the inradius
-  Mesh cutter;
-  std::array<Mesh::Vertex_index, 3> base;
+  ExactMesh cutter;
+  std::array<ExactMesh::Vertex_index, 3> base;
   for (int i = 0; i < 3; ++i) {
     const double a = 2.0 * std::numbers::pi * i / 3.0;
-    base[i] = cutter.add_vertex(Kernel::Point_3(
-        centre.x + r * std::cos(a), centre.y + r * std::sin(a), z_mm));
+    base[i] = cutter.add_vertex(ExactPoint(centre.x + r * std::cos(a),
+                                           centre.y + r * std::sin(a), z_mm));
   }
-  const Mesh::Vertex_index apex = cutter.add_vertex(
-      Kernel::Point_3(centre.x, centre.y, z_mm + 10.0 * reach));
+  const ExactMesh::Vertex_index apex =
+      cutter.add_vertex(ExactPoint(centre.x, centre.y, z_mm + 10.0 * reach));
   // Outward: the base faces down, seen from below clockwise.
   cutter.add_face(base[0], base[2], base[1]);
   cutter.add_face(base[0], base[1], apex);
@@ -73,13 +70,13 @@ Mesh cutter_above(const TriangleMesh& mesh, double z_mm) {
 }  // namespace
 
 TriangleMesh cut_below(const TriangleMesh& input, double z_mm) {
-  const auto soup = polygon_soup<Kernel::Point_3>(input);
+  const auto soup = polygon_soup<ExactPoint>(input);
   if (!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons)) {
     throw GeometryError("cannot cut a mesh that is not a 2-manifold");
   }
-  Mesh mesh;
+  ExactMesh mesh;
   PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, mesh);
-  Mesh cutter = cutter_above(input, z_mm);
+  ExactMesh cutter = cutter_above(input, z_mm);
   try {
     const bool closed =
         PMP::clip(mesh, cutter, CGAL::parameters::clip_volume(true));

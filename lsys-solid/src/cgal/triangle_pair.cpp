@@ -8,18 +8,18 @@
 // vertex meet beyond it exactly when the edge opposite that vertex in one
 // crosses the other. Coordinates are doubles and every predicate of EPICK is
 // exact, so the answer is the one `lsolid check` gives.
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/intersections.h>
+#include "kernel.hpp"
 
 #include "triangle_pair.hpp"
+
+#include <CGAL/intersections.h>
 
 namespace lsolid {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Segment = Kernel::Segment_3;
-using Triangle = Kernel::Triangle_3;
+using Point = Inexact::Point_3;
+using Segment = Inexact::Segment_3;
+using Triangle = Inexact::Triangle_3;
 
 Point point(const glm::dvec3& p) { return {p.x, p.y, p.z}; }
 

@@ -5,11 +5,13 @@
 // functions (PMP::remove_degenerate_faces, the experimental
 // remove_almost_degenerate_faces and remove_self_intersections). Predicates
 // are exact (EPICK) on the rounded coordinates themselves.
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include "kernel.hpp"
+
+#include "lsolid/rounding.hpp"
+
 #include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
 #include <CGAL/Polygon_mesh_processing/repair_self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <cmath>
 #include <set>
@@ -17,36 +19,32 @@
 #include <vector>
 
 #include "conversion.hpp"
-#include "lsolid/rounding.hpp"
 #include "vertex_key.hpp"
 
 namespace lsolid {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Mesh = CGAL::Surface_mesh<Point>;
-using Face = Mesh::Face_index;
-namespace PMP = CGAL::Polygon_mesh_processing;
-
 constexpr int kMaxPasses = 6;
 constexpr double kShortEdgeMm = 1e-4;
 constexpr double kCapCosine = -0.985;  // angles above ~170° are caps
 
-void snap_to_float(Mesh& mesh) {
+void snap_to_float(InexactMesh& mesh) {
   for (const auto v : mesh.vertices()) {
-    const Point& p = mesh.point(v);
-    mesh.point(v) = Point(to_float(p.x()), to_float(p.y()), to_float(p.z()));
+    const InexactPoint& p = mesh.point(v);
+    mesh.point(v) =
+        InexactPoint(to_float(p.x()), to_float(p.y()), to_float(p.z()));
   }
 }
 
-std::size_t count_faces(const Mesh& mesh) { return mesh.number_of_faces(); }
+std::size_t count_faces(const InexactMesh& mesh) {
+  return mesh.number_of_faces();
+}
 
 }  // namespace
 
 TriangleMesh round_and_repair(const TriangleMesh& input, bool float_coordinates,
                               RoundingStats& stats) {
-  Mesh mesh = to_surface_mesh<Mesh>(input);
+  InexactMesh mesh = to_surface_mesh<InexactMesh>(input);
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     stats.passes = pass + 1;
     if (float_coordinates) snap_to_float(mesh);
@@ -61,7 +59,8 @@ TriangleMesh round_and_repair(const TriangleMesh& input, bool float_coordinates,
     if (float_coordinates) snap_to_float(mesh);
     stats.slivers_removed += before - std::min(before, count_faces(mesh));
 
-    std::vector<std::pair<Face, Face>> pairs;
+    std::vector<std::pair<InexactMesh::Face_index, InexactMesh::Face_index>>
+        pairs;
     PMP::self_intersections(mesh, std::back_inserter(pairs));
     bool has_degenerate = false;
     for (const auto f : mesh.faces()) {
@@ -71,7 +70,7 @@ TriangleMesh round_and_repair(const TriangleMesh& input, bool float_coordinates,
       }
     }
     if (pairs.empty() && !has_degenerate) break;
-    std::set<Face> bad;
+    std::set<InexactMesh::Face_index> bad;
     for (const auto& [a, b] : pairs) {
       bad.insert(a);
       bad.insert(b);
@@ -81,7 +80,7 @@ TriangleMesh round_and_repair(const TriangleMesh& input, bool float_coordinates,
       // CGAL refuses (a precondition, as an exception) to rebuild around a
       // face that rounding made degenerate; it is then rebuilt in place, and
       // the next pass collapses that face first.
-      Mesh before_repair = mesh;
+      InexactMesh before_repair = mesh;
       try {
         PMP::experimental::remove_self_intersections(
             bad, mesh, CGAL::parameters::preserve_genus(false));

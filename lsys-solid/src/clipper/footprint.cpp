@@ -10,6 +10,8 @@
 // fig. 1.24's plants, whose branches share endpoints and directions). The
 // 3D union of the same tubes took minutes on those figures (docs/design.md,
 // "Lying flat"). Clipper lives in this file only.
+#include "lsolid/footprint.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -22,7 +24,6 @@
 #include <vector>
 
 #include "lsolid/errors.hpp"
-#include "lsolid/footprint.hpp"
 #include "lsolid/parts.hpp"
 
 namespace lsolid {

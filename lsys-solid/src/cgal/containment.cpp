@@ -7,14 +7,16 @@
 // that were deep inside a part outside the result. The points are found by
 // ray casting inside each part; the test is CGAL's Side_of_triangle_mesh,
 // exact predicates on the result's coordinates (EPICK).
+#include "kernel.hpp"
+
+#include "lsolid/containment.hpp"
+
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 #include <CGAL/Side_of_triangle_mesh.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <array>
@@ -24,31 +26,27 @@
 #include <vector>
 
 #include "conversion.hpp"
-#include "lsolid/containment.hpp"
 #include "lsolid/errors.hpp"
 #include "union_find.hpp"
 
 namespace lsolid {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Mesh = CGAL::Surface_mesh<Point>;
-using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
-using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+using Primitive = CGAL::AABB_face_graph_triangle_primitive<InexactMesh>;
+using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Inexact, Primitive>>;
 
 constexpr std::size_t kFacesPerWitness = 64;
 
-glm::dvec3 to_glm(const Point& p) { return {p.x(), p.y(), p.z()}; }
+glm::dvec3 to_glm(const InexactPoint& p) { return {p.x(), p.y(), p.z()}; }
 
 // The faces that span an area. CGAL refuses (as a precondition) to shoot a
 // ray at a degenerate triangle, and a part or a decimated union may hold
 // a few (parts of the blog's trees at full size); having no area, they
 // stop no ray and change no side.
-std::vector<Mesh::Face_index> faces_with_area(const Mesh& mesh) {
-  std::vector<Mesh::Face_index> out;
+std::vector<InexactMesh::Face_index> faces_with_area(const InexactMesh& mesh) {
+  std::vector<InexactMesh::Face_index> out;
   out.reserve(mesh.number_of_faces());
-  for (const Mesh::Face_index f : mesh.faces()) {
+  for (const InexactMesh::Face_index f : mesh.faces()) {
     if (!CGAL::Polygon_mesh_processing::is_degenerate_triangle_face(f, mesh))
       out.push_back(f);
   }
@@ -57,33 +55,34 @@ std::vector<Mesh::Face_index> faces_with_area(const Mesh& mesh) {
 
 void add_witnesses(const Part& part, std::size_t index,
                    std::vector<Witness>& out) {
-  const Mesh mesh = to_surface_mesh<Mesh>(part.mesh);
+  const InexactMesh mesh = to_surface_mesh<InexactMesh>(part.mesh);
   if (mesh.number_of_faces() == 0) return;
-  const std::vector<Mesh::Face_index> solid_faces = faces_with_area(mesh);
+  const std::vector<InexactMesh::Face_index> solid_faces =
+      faces_with_area(mesh);
   Tree tree(solid_faces.begin(), solid_faces.end(), mesh);
   tree.accelerate_distance_queries();
   std::size_t k = 0;
-  for (const Mesh::Face_index f : solid_faces) {
+  for (const InexactMesh::Face_index f : solid_faces) {
     if (k++ % kFacesPerWitness != 0) continue;
     const auto h = mesh.halfedge(f);
-    const Point& a = mesh.point(mesh.source(h));
-    const Point& b = mesh.point(mesh.target(h));
-    const Point& c = mesh.point(mesh.target(mesh.next(h)));
-    const Kernel::Vector_3 normal = CGAL::cross_product(b - a, c - a);
+    const InexactPoint& a = mesh.point(mesh.source(h));
+    const InexactPoint& b = mesh.point(mesh.target(h));
+    const InexactPoint& c = mesh.point(mesh.target(mesh.next(h)));
+    const Inexact::Vector_3 normal = CGAL::cross_product(b - a, c - a);
     const double length = std::sqrt(normal.squared_length());
     if (!(length > 0.0) || !std::isfinite(length)) continue;
-    const Point centre = CGAL::centroid(a, b, c);
+    const InexactPoint centre = CGAL::centroid(a, b, c);
     // A unit direction: the normal of a sliver can be so short that the
     // ray's second point rounds back onto its first (the blog's trees at
     // full size), and CGAL refuses a degenerate ray.
-    const Kernel::Ray_3 inward(centre, -normal / length);
+    const Inexact::Ray_3 inward(centre, -normal / length);
     if (inward.is_degenerate()) continue;
     const auto hit = tree.first_intersection(
-        inward, [f](const Mesh::Face_index g) { return g == f; });
+        inward, [f](const InexactMesh::Face_index g) { return g == f; });
     if (!hit) continue;
-    const Point* exit = boost::get<Point>(&hit->first);
+    const InexactPoint* exit = boost::get<InexactPoint>(&hit->first);
     if (exit == nullptr) continue;  // along a face: no clear inside
-    const Point middle = CGAL::midpoint(centre, *exit);
+    const InexactPoint middle = CGAL::midpoint(centre, *exit);
     const double depth = std::sqrt(tree.squared_distance(middle));
     if (depth <= 0.0) continue;
     out.push_back(
@@ -106,7 +105,7 @@ std::vector<Witness> witnesses_outside(const TriangleMesh& mesh,
                                        double min_depth_mm) {
   std::vector<Witness> outside;
   if (witnesses.empty()) return outside;
-  const Mesh solid = to_surface_mesh<Mesh>(mesh);
+  const InexactMesh solid = to_surface_mesh<InexactMesh>(mesh);
   if (solid.number_of_faces() == 0) {
     if (mesh.triangles.empty()) {
       for (const Witness& w : witnesses) {
@@ -117,7 +116,8 @@ std::vector<Witness> witnesses_outside(const TriangleMesh& mesh,
     throw GeometryError(
         "cannot test points against a mesh that is not a 2-manifold");
   }
-  const std::vector<Mesh::Face_index> solid_faces = faces_with_area(solid);
+  const std::vector<InexactMesh::Face_index> solid_faces =
+      faces_with_area(solid);
   if (solid_faces.empty()) {
     for (const Witness& w : witnesses) {
       if (w.depth_mm >= min_depth_mm) outside.push_back(w);
@@ -125,10 +125,11 @@ std::vector<Witness> witnesses_outside(const TriangleMesh& mesh,
     return outside;
   }
   Tree tree(solid_faces.begin(), solid_faces.end(), solid);
-  const CGAL::Side_of_triangle_mesh<Mesh, Kernel> side(tree);
+  const CGAL::Side_of_triangle_mesh<InexactMesh, Inexact> side(tree);
   for (const Witness& w : witnesses) {
     if (w.depth_mm < min_depth_mm) continue;
-    if (side(Point(w.point.x, w.point.y, w.point.z)) != CGAL::ON_BOUNDED_SIDE) {
+    if (side(InexactPoint(w.point.x, w.point.y, w.point.z)) !=
+        CGAL::ON_BOUNDED_SIDE) {
       outside.push_back(w);
     }
   }

@@ -4,26 +4,21 @@
 // Exact geometric checks with CGAL 5.5 and its filtered exact predicates
 // (EPICK): coordinates are doubles, and every predicate is decided exactly.
 // CGAL's preconditions stay on, as exceptions, in release builds too (see
-// boolean_cgal.cpp): a check must report, not crash.
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+// boolean.cpp): a check must report, not crash.
+#include "kernel.hpp"
+
+#include "exact_checks.hpp"
+
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <iterator>
 #include <vector>
 
-#include "exact_checks.hpp"
-
 namespace lsolid {
 namespace {
-
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Mesh = CGAL::Surface_mesh<Point>;
-namespace PMP = CGAL::Polygon_mesh_processing;
 
 // Counts the pairs without keeping them.
 struct CountingIterator {
@@ -50,7 +45,7 @@ ExactChecks exact_checks(const TriangleMesh& input, bool is_edge_manifold,
   ExactChecks r;
   TriangleMesh mesh = input;
   remove_unused_vertices(mesh);  // a halfedge mesh has no isolated points
-  std::vector<Point> points;
+  std::vector<InexactPoint> points;
   points.reserve(mesh.vertices.size());
   for (const glm::dvec3& p : mesh.vertices) points.emplace_back(p.x, p.y, p.z);
   std::vector<std::vector<std::size_t>> polygons;
@@ -70,7 +65,7 @@ ExactChecks exact_checks(const TriangleMesh& input, bool is_edge_manifold,
     PMP::orient_polygon_soup(points, polygons);
   }
   try {
-    Mesh sm;
+    InexactMesh sm;
     PMP::polygon_soup_to_polygon_mesh(points, polygons, sm);
     PMP::self_intersections(sm, CountingIterator{&r.self_intersecting_pairs});
     r.self_intersections_checked = true;

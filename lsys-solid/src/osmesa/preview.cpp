@@ -6,6 +6,8 @@
 // works on a headless CI machine. The fixed-function pipeline is enough for
 // a shaded picture: flat normals, a key and a fill light, orthographic
 // projection, drawn from client-side vertex arrays.
+#include "lsolid/preview.hpp"
+
 #include <GL/gl.h>
 #include <GL/osmesa.h>
 
@@ -18,7 +20,6 @@
 #include <numbers>
 
 #include "lsolid/errors.hpp"
-#include "lsolid/preview.hpp"
 
 namespace lsolid {
 namespace {

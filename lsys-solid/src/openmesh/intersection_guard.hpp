@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "cell_grid.hpp"
+#include "cgal/triangle_pair.hpp"
 #include "surface_distance.hpp"
-#include "triangle_pair.hpp"
 
 namespace lsolid {
 

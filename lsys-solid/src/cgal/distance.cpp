@@ -5,41 +5,38 @@
 // tests. CGAL's bounded-error Hausdorff distance (after Tang et al. 2009)
 // bounds the answer instead of sampling; it is slow where large coplanar
 // faces coincide (14 s on a 3k-triangle figure with a flat underside), so
-// the build measures by sampling (decimate_openmesh.cpp). Sequential_tag:
+// the build measures by sampling (openmesh/decimate.cpp). Sequential_tag:
 // the parallel version needs METIS.
+#include "kernel.hpp"
+
+#include "lsolid/distance.hpp"
+
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Side_of_triangle_mesh.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "conversion.hpp"
-#include "lsolid/distance.hpp"
 #include "lsolid/errors.hpp"
 
 namespace lsolid {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
-namespace PMP = CGAL::Polygon_mesh_processing;
-
 // Through a polygon soup, as validate() does: adding the faces one by one
 // fails on some valid meshes whose fans are completed out of order.
-Mesh stitched(const TriangleMesh& mesh) {
-  auto [points, polygons] = polygon_soup<Kernel::Point_3>(mesh);
+InexactMesh stitched(const TriangleMesh& mesh) {
+  auto [points, polygons] = polygon_soup<InexactPoint>(mesh);
   if (!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
     PMP::orient_polygon_soup(points, polygons);
   }
-  Mesh out;
+  InexactMesh out;
   PMP::polygon_soup_to_polygon_mesh(points, polygons, out);
   if (out.number_of_faces() == 0) {
     throw GeometryError("cannot measure the distance to an empty mesh");
@@ -51,19 +48,19 @@ Mesh stitched(const TriangleMesh& mesh) {
 
 double hausdorff_distance_mm(const TriangleMesh& a, const TriangleMesh& b,
                              double error_bound_mm) {
-  const Mesh first = stitched(a);
-  const Mesh second = stitched(b);
+  const InexactMesh first = stitched(a);
+  const InexactMesh second = stitched(b);
   return PMP::bounded_error_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(
       first, second, error_bound_mm);
 }
 
 double overlap_depth_mm(const TriangleMesh& a, const TriangleMesh& b) {
-  const Mesh solid = stitched(b);
-  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
+  const InexactMesh solid = stitched(b);
+  using Primitive = CGAL::AABB_face_graph_triangle_primitive<InexactMesh>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Inexact, Primitive>>;
   Tree tree(faces(solid).first, faces(solid).second, solid);
   tree.accelerate_distance_queries();
-  const CGAL::Side_of_triangle_mesh<Mesh, Kernel> side(tree);
+  const CGAL::Side_of_triangle_mesh<InexactMesh, Inexact> side(tree);
   const Box box = bounds(b);
   double deepest = 0.0;
   const auto sample = [&](const glm::dvec3& p) {
@@ -71,7 +68,7 @@ double overlap_depth_mm(const TriangleMesh& a, const TriangleMesh& b) {
         p.x > box.max.x || p.y > box.max.y || p.z > box.max.z) {
       return;
     }
-    const Kernel::Point_3 q(p.x, p.y, p.z);
+    const InexactPoint q(p.x, p.y, p.z);
     if (side(q) != CGAL::ON_BOUNDED_SIDE) return;
     deepest = std::max(deepest, std::sqrt(tree.squared_distance(q)));
   };

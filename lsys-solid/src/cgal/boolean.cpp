@@ -8,13 +8,14 @@
 // faster than a sequential fold; pairs with disjoint boxes need no boolean
 // (Manifold's BatchUnion does the same). CGAL's preconditions are on, as
 // exceptions, in every CGAL translation unit (lsys-solid/CMakeLists.txt).
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include "kernel.hpp"
+
+#include "lsolid/boolean.hpp"
+
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/box_intersection_d.h>
 
@@ -29,18 +30,11 @@
 #include <unordered_map>
 
 #include "conversion.hpp"
-#include "lsolid/boolean.hpp"
 #include "lsolid/errors.hpp"
 #include "lsolid/rounding.hpp"
 
 namespace lsolid {
 namespace {
-
-using Exact = CGAL::Exact_predicates_exact_constructions_kernel;
-using ExactMesh = CGAL::Surface_mesh<Exact::Point_3>;
-using Inexact = CGAL::Exact_predicates_inexact_constructions_kernel;
-using InexactMesh = CGAL::Surface_mesh<Inexact::Point_3>;
-namespace PMP = CGAL::Polygon_mesh_processing;
 
 constexpr double kPerturbationMm = 1e-5;
 constexpr int kAttempts = 3;

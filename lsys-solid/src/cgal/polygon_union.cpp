@@ -14,9 +14,11 @@
 // out. (CGAL's Boolean set operations would do the same, but their
 // arrangement code does not compile with the precondition policy that every
 // CGAL translation unit shares; see lsys-solid/CMakeLists.txt.)
+#include "kernel.hpp"
+
+#include "polygon_union.hpp"
+
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 
@@ -25,12 +27,9 @@
 #include <map>
 #include <utility>
 
-#include "plate_geometry.hpp"
-
 namespace lsolid {
 namespace {
 
-using Exact = CGAL::Exact_predicates_exact_constructions_kernel;
 using ExactPolygon = CGAL::Polygon_2<Exact>;
 struct FaceInfo {
   bool inside = false;

@@ -9,6 +9,8 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
+#include "lsys/rotation.hpp"
+
 namespace lsys {
 SinCos sin_cos_deg(double angle_deg) noexcept {
   const double quarter = angle_deg / 90.0;
@@ -56,13 +58,9 @@ void Turtle::bend(const glm::dvec3& tropism, double elasticity) noexcept {
   const glm::dvec3 k = axis / length;
   const double c = std::cos(angle);
   const double s = std::sin(angle);
-  // Rodrigues' rotation of each frame vector about k.
-  const auto spin = [&](const glm::dvec3& v) {
-    return v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1.0 - c);
-  };
-  heading_ = spin(heading_);
-  left_ = spin(left_);
-  up_ = spin(up_);
+  heading_ = rotate_about(heading_, k, c, s);
+  left_ = rotate_about(left_, k, c, s);
+  up_ = rotate_about(up_, k, c, s);
   orthonormalize();
 }
 
@@ -79,12 +77,9 @@ void Turtle::set_heading(const glm::dvec3& heading) noexcept {
     return;
   }
   const glm::dvec3 k = axis / s;
-  const auto spin = [&](const glm::dvec3& v) {
-    return v * c + glm::cross(k, v) * s + k * glm::dot(k, v) * (1.0 - c);
-  };
   heading_ = h;
-  left_ = spin(left_);
-  up_ = spin(up_);
+  left_ = rotate_about(left_, k, c, s);
+  up_ = rotate_about(up_, k, c, s);
   orthonormalize();
 }
 

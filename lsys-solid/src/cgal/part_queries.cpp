@@ -14,6 +14,7 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/convex_hull_3.h>
 
+#include <algorithm>
 #include <map>
 
 #include "conversion.hpp"
@@ -46,8 +47,15 @@ std::vector<std::array<std::uint32_t, 3>> convex_hull_triangles(
       const InexactPoint& p = hull.point(v);
       t[k++] = index.at({p.x(), p.y(), p.z()});
     }
+    // Each triangle from its least corner, keeping its orientation.
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
     out.push_back(t);
   }
+  // In a canonical order: convex_hull_3 lists faces in an order that
+  // follows the addresses its allocations get, so a change elsewhere in
+  // the program (a vector allocated earlier) reordered a junction's
+  // triangles and changed the model's bytes.
+  std::sort(out.begin(), out.end());
   return out;
 }
 

@@ -9,6 +9,8 @@
 // gives one closed part instead, with no faces that meet face on face.
 #include "parts/thickened_sheet.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -20,9 +22,14 @@
 
 #include "cgal/part_queries.hpp"
 #include "lsolid/errors.hpp"
+#include "lsolid/validate.hpp"
 
 namespace lsolid {
 namespace {
+
+// A sheet at most this many plate thicknesses across may become its
+// thickened points' convex hull when it cannot be thickened cleanly.
+constexpr double kHullSheetWalls = 8.0;
 
 using Triangle = std::array<std::uint32_t, 3>;
 
@@ -268,6 +275,66 @@ std::optional<ThinnedSheet> thicken_sheet_thinning(const lsys::Sheet& sheet,
     }
     if (!thinned) return std::nullopt;
   }
+}
+
+// A sheet (a predefined surface, cpfg's `~l`) thickened as plates are:
+// along its normals, or if that cuts itself (a leaf's pointed tip bends
+// sharply for the thickness) swept along its mean normal, or else along
+// its normals but thinner where they cut (a swept leaf's hooked edges
+// where it narrows to its tip), with a warning. A sheet a few
+// walls across that neither way makes clear of itself (a bud 3 mm wide,
+// a leaf just emerging) is printed as the convex hull of its points
+// thickened, which a print that small barely tells apart; a larger one
+// would print wrong, so it ends the build, named.
+SheetPart sheet_part(const lsys::Sheet& sheet, std::size_t index,
+                     double thickness) {
+  const glm::dvec3 at = sheet.points[sheet.triangles[0][0]];
+  std::string label = fmt::format("surface {} at ({:.3f}, {:.3f}, {:.3f}) mm",
+                                  index, at.x, at.y, at.z);
+  for (const SheetOffset way :
+       {SheetOffset::Normals, SheetOffset::MeanNormal}) {
+    std::optional<TriangleMesh> mesh = thicken_sheet(sheet, thickness, way);
+    if (!mesh || !validate(*mesh).is_printable()) continue;
+    return SheetPart{.part =
+                         Part{std::move(*mesh), std::move(label), sheet.color}};
+  }
+  if (std::optional<ThinnedSheet> thinned =
+          thicken_sheet_thinning(sheet, thickness);
+      thinned && validate(thinned->mesh).is_printable()) {
+    return SheetPart{
+        .part = Part{std::move(thinned->mesh), std::move(label), sheet.color},
+        .kind = SheetKind::Thinned,
+        .thinnest_mm = thinned->thinnest_fraction * thickness};
+  }
+  Box box;
+  for (const glm::dvec3& p : sheet.points) {
+    box.min = glm::min(box.min, p);
+    box.max = glm::max(box.max, p);
+  }
+  const glm::dvec3 size = box.size();
+  const double across = std::max({size.x, size.y, size.z});
+  if (across <= kHullSheetWalls * thickness) {
+    // Each point moved half the thickness along each axis both ways: the
+    // hull holds the sheet thickened along any normal.
+    TriangleMesh hull;
+    for (const glm::dvec3& p : sheet.points) {
+      for (int axis = 0; axis < 3; ++axis) {
+        glm::dvec3 d(0.0);
+        d[axis] = thickness / 2.0;
+        hull.vertices.push_back(p - d);
+        hull.vertices.push_back(p + d);
+      }
+    }
+    hull.triangles = convex_hull_triangles(hull.vertices);
+    remove_unused_vertices(hull);
+    return SheetPart{
+        .part = Part{std::move(hull), std::move(label), sheet.color},
+        .kind = SheetKind::Hulled};
+  }
+  throw GeometryError(fmt::format(
+      "{}, {:.1f} mm across, bends too sharply to thicken to {:.2f} mm "
+      "without cutting itself; draw it larger or give a thinner --wall",
+      label, across, thickness));
 }
 
 }  // namespace lsolid

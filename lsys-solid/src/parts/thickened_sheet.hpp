@@ -55,4 +55,30 @@ inline constexpr double kThinnestSheet = 1.0 / 64.0;
 [[nodiscard]] std::optional<ThinnedSheet> thicken_sheet_thinning(
     const lsys::Sheet& sheet, double thickness_mm);
 
+/// How a sheet became a part.
+enum class SheetKind {
+  Even,     ///< thickened along its normals or its mean normal
+  Thinned,  ///< thinner where it folds sharply (thicken_sheet_thinning)
+  Hulled,   ///< the convex hull of its points thickened
+};
+
+/// A sheet as a part, and how it was made.
+struct SheetPart {
+  Part part;
+  SheetKind kind = SheetKind::Even;
+  /// The least thickness left, for SheetKind::Thinned.
+  double thinnest_mm = 0.0;
+};
+
+/// A sheet (a predefined surface, cpfg's `~l`) thickened to `thickness_mm`
+/// as plates are: along its normals, or if that cuts itself swept along its
+/// mean normal, or else along its normals but thinner where they cut. A
+/// sheet at most eight thicknesses across that no way makes clear of
+/// itself becomes the convex hull of its points thickened. `index` names
+/// it in the part's label.
+/// @throws GeometryError for a larger sheet that cannot be thickened
+///   without cutting itself.
+[[nodiscard]] SheetPart sheet_part(const lsys::Sheet& sheet, std::size_t index,
+                                   double thickness_mm);
+
 }  // namespace lsolid

@@ -273,7 +273,7 @@ void print_colors(const Solid& solid, const std::vector<Rgb>& palette) {
 
 }  // namespace
 
-int run_build(const BuildCommand& command) {
+void run_build(const BuildCommand& command) {
   std::filesystem::path output = command.output;
   if (output.empty()) {
     output =
@@ -446,21 +446,19 @@ int run_build(const BuildCommand& command) {
   };
   if (!fits && !command.force) {
     finish(false);
-    std::fprintf(stderr,
-                 "error: the model does not fit the bed; %s was not written "
-                 "(--force writes it anyway)\n",
-                 output.string().c_str());
-    return 3;
+    throw Refused(fmt::format(
+        "the model does not fit the bed; {} was not written (--force writes "
+        "it anyway)",
+        output.string()));
   }
   const std::size_t pieces = solid.report.validation.pieces();
   if (pieces > 1 && options.unite) {
     if (command.one_piece) {
       finish(false);
-      std::fprintf(stderr,
-                   "error: the model is in %zu separate pieces; %s was not "
-                   "written (--one-piece)\n",
-                   pieces, output.string().c_str());
-      return 3;
+      throw Refused(
+          fmt::format("the model is in {} separate pieces; {} was not written "
+                      "(--one-piece)",
+                      pieces, output.string()));
     }
     std::fprintf(stderr,
                  "warning: the model is in %zu separate pieces, which print "
@@ -469,10 +467,8 @@ int run_build(const BuildCommand& command) {
   }
   if (!solid.report.validation.is_printable() && options.unite) {
     finish(false);
-    std::fprintf(stderr,
-                 "error: the mesh is not printable; %s was not written\n",
-                 output.string().c_str());
-    return 3;
+    throw Refused(fmt::format("the mesh is not printable; {} was not written",
+                              output.string()));
   }
   if (!solid.volumes.empty()) {
     write_colored(solid.volumes, output, format, options.print.colors);
@@ -492,7 +488,6 @@ int run_build(const BuildCommand& command) {
     if (text) fmt::print("rendered {}\n", preview.string());
   }
   finish(true);
-  return 0;
 }
 
 }  // namespace lsolid::cli

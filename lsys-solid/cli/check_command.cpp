@@ -99,8 +99,8 @@ std::string text_report(const std::string& file, const ValidationReport& r,
 // printable, and they must not overlap. A union of volumes that share
 // faces, rounded to floats, took CGAL over 15 minutes on the bush at n = 3,
 // so overlap is sampled (overlap_depth_mm).
-int check_volumes(const CheckCommand& command,
-                  const std::vector<ColoredMesh>& volumes) {
+bool check_volumes(const CheckCommand& command,
+                   const std::vector<ColoredMesh>& volumes) {
   std::vector<ValidationReport> reports;
   bool printable = true;
   for (const ColoredMesh& v : volumes) {
@@ -161,19 +161,13 @@ int check_volumes(const CheckCommand& command,
     }
     fmt::print("verdict: {}\n", printable ? "printable" : "NOT printable");
   }
-  return printable ? 0 : 1;
+  return printable;
 }
 
 }  // namespace
 
-int run_check(const CheckCommand& command) {
-  std::vector<ColoredMesh> volumes;
-  try {
-    volumes = read_colored(command.file);
-  } catch (const IoError& e) {
-    std::fprintf(stderr, "error: %s\n", e.what());
-    return 2;
-  }
+bool run_check(const CheckCommand& command) {
+  const std::vector<ColoredMesh> volumes = read_colored(command.file);
   // A file without a triangle is nothing to check, not a printable (or an
   // unprintable) mesh with bounds of -1e300.
   std::size_t triangles = 0;
@@ -190,7 +184,7 @@ int run_check(const CheckCommand& command) {
                                ? json_report(report)
                                : text_report(command.file, report, in_pieces);
   std::fputs(text.c_str(), stdout);
-  return report.is_printable() && !in_pieces ? 0 : 1;
+  return report.is_printable() && !in_pieces;
 }
 
 }  // namespace lsolid::cli

@@ -5,6 +5,7 @@
 #include <CLI/App.hpp>
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -115,9 +116,17 @@ struct BuildCommand {
   bool quiet = false;              ///< no report (errors still go to stderr)
   bool json = false;               ///< the report as one JSON object
 };
-/// Returns the exit code (3 when the mesh is not printable).
-/// @throws lsys::ParseError, GeometryError, IoError.
-int run_build(const BuildCommand& command);
+/// A build that ran to its end but whose model is not written: it is not
+/// printable, does not fit the --bed, or falls apart with --one-piece. The
+/// report has been printed; the message says what was refused.
+class Refused : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Builds, reports and writes.
+/// @throws Refused, lsys::ParseError, GeometryError, IoError.
+void run_build(const BuildCommand& command);
 
 /// `lsolid check MESH`: validates an STL, OFF, 3MF or OBJ file.
 struct CheckCommand {
@@ -125,9 +134,9 @@ struct CheckCommand {
   bool json = false;
   bool one_piece = false;  ///< separate pieces make the verdict "not"
 };
-/// Returns 0 when printable (and one piece, with `one_piece`), 1 when not,
-/// 2 when it cannot be read.
-/// @throws lsys::ParseError for a malformed file or one without triangles.
-int run_check(const CheckCommand& command);
+/// Returns whether the mesh is printable (and one piece, with `one_piece`).
+/// @throws lsys::ParseError for a malformed file or one without triangles,
+///   IoError when it cannot be read.
+bool run_check(const CheckCommand& command);
 
 }  // namespace lsolid::cli

@@ -1,5 +1,7 @@
 // Copyright 2026 the lsolid authors
 // SPDX-License-Identifier: MIT
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cstdio>
@@ -7,6 +9,7 @@
 
 #include "commands.hpp"
 #include "json.hpp"
+#include "lsolid/defaults.hpp"
 #include "lsolid/units.hpp"
 #include "lsys/diagnostic.hpp"
 #include "lsys/module_string.hpp"
@@ -92,20 +95,26 @@ lsys::Grammar load_grammar(const GrammarInput& input) {
 }
 
 void add_print_options(CLI::App& command, PrintInput& input) {
-  command.add_option("--wall", input.wall,
-                     "minimum wall: thinnest branch and leaf thickness "
-                     "(default 0.8mm)");
+  command.add_option(
+      "--wall", input.wall,
+      fmt::format("minimum wall: thinnest branch and leaf thickness "
+                  "(default {:g}mm)",
+                  kDefaultWallMm));
   auto* height = command.add_option("--height", input.height,
                                     "scale the model to this height");
   auto* size = command.add_option(
-      "--size", input.size, "scale the longest side to this (default 100mm)");
+      "--size", input.size,
+      fmt::format("scale the longest side to this (default {:g}mm)",
+                  kDefaultSizeMm));
   auto* scale =
       command.add_option("--scale", input.scale, "millimetres per model unit");
   height->excludes(size)->excludes(scale);
   size->excludes(scale);
   command.add_option("--tolerance", input.tolerance,
-                     "chord error of tube cross-sections, and how far "
-                     "decimation may move the surface (default 0.05mm)");
+                     fmt::format("chord error of tube cross-sections, and how "
+                                 "far decimation may move the surface "
+                                 "(default {:g}mm)",
+                                 kDefaultToleranceMm));
   command.add_option("--base", input.base,
                      "auto: a disc under a model that would stand on a small "
                      "footprint (default); disc; none");
@@ -121,7 +130,7 @@ void add_print_options(CLI::App& command, PrintInput& input) {
 
 PrintSettings print_settings(const lsys::Grammar& grammar,
                              const PrintInput& input) {
-  PrintSettings given;
+  PrintOverrides given;
   if (input.wall) given.wall_mm = parse_length_mm(*input.wall, "--wall");
   if (input.height)
     given.height_mm = parse_length_mm(*input.height, "--height");
@@ -135,14 +144,7 @@ PrintSettings print_settings(const lsys::Grammar& grammar,
   if (input.base) given.base = parse_base(*input.base, "--base");
   if (input.colors) given.colors = parse_colors(*input.colors, "--colors");
   if (input.profile) given.profile = parse_profile(*input.profile, "--profile");
-  return resolve_print_settings(
-      grammar, {.settings = given,
-                .sets_size = input.height || input.size || input.scale,
-                .sets_wall = input.wall.has_value(),
-                .sets_tolerance = input.tolerance.has_value(),
-                .sets_base = input.base.has_value(),
-                .sets_colors = input.colors.has_value(),
-                .sets_profile = input.profile.has_value()});
+  return resolve_print_settings(grammar, given);
 }
 
 std::uint64_t parse_whole_number(const std::string& text,

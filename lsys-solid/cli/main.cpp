@@ -18,6 +18,7 @@
 
 namespace {
 
+constexpr int kExitNotPrintable = 1;  // lsolid check's verdict
 constexpr int kExitInput = 2;
 constexpr int kExitGeometry = 3;
 constexpr int kExitIo = 4;
@@ -131,12 +132,13 @@ int main(int argc, char** argv) {
     std::fputs(app.help().c_str(), stderr);
     return kExitInput;
   }
+  const bool is_check = check_app->parsed();
   try {
     int code = 0;
-    if (check_app->parsed()) code = lsolid::cli::run_check(check);
+    if (is_check && !lsolid::cli::run_check(check)) code = kExitNotPrintable;
     if (derive_app->parsed()) lsolid::cli::run_derive(derive);
     if (skeleton_app->parsed()) lsolid::cli::run_skeleton(skeleton);
-    if (is_build) code = lsolid::cli::run_build(build);
+    if (is_build) lsolid::cli::run_build(build);
     // A report that could not be written is lost, whatever else succeeded
     // (`lsolid x.ls > /dev/full`).
     errno = 0;
@@ -150,12 +152,16 @@ int main(int argc, char** argv) {
   } catch (const lsys::ParseError& e) {
     std::fputs(lsys::format_diagnostic(e.diagnostic()).c_str(), stderr);
     return kExitInput;
+  } catch (const lsolid::cli::Refused& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return kExitGeometry;
   } catch (const lsolid::GeometryError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return kExitGeometry;
   } catch (const lsolid::IoError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
-    return kExitIo;
+    // A mesh that cannot be read is check's third verdict, "unreadable".
+    return is_check ? kExitInput : kExitIo;
   } catch (const std::bad_alloc&) {
     std::fputs("error: out of memory\n", stderr);
     return kExitGeometry;

@@ -6,10 +6,7 @@ namespace lsolid {
 
 /// The golden ratio's conjugate, (√5 − 1) / 2. Its multiples modulo 1 never
 /// repeat and spread evenly, so the ring phase of the n-th tube or sphere
-/// (n · kGolden of a step) keeps neighbouring parts' seams apart; and the
-/// direction (1, kGolden, 1 − kGolden) lies along no axis or diagonal, so a
-/// union retried after a shift along it moves off every coincidence that
-/// lattice-like models make.
+/// (n · kGolden of a step) keeps neighbouring parts' seams apart.
 inline constexpr double kGolden = 0.6180339887498949;
 
 }  // namespace lsolid

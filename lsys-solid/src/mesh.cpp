@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 #include <unordered_map>
 
-#include "union_find.hpp"
+#include "shells.hpp"
 #include "vertex_key.hpp"
 
 namespace lsolid {
@@ -69,51 +69,25 @@ void remove_unused_vertices(TriangleMesh& mesh) {
   mesh.vertices = std::move(kept);
 }
 
-std::size_t remove_cavities(TriangleMesh& mesh) {
-  // Shells: triangles joined through shared edges.
-  const std::size_t n = mesh.triangles.size();
-  UnionFind shells(n);
-  std::unordered_map<std::uint64_t, std::uint32_t> first_face;
-  for (std::uint32_t f = 0; f < n; ++f) {
-    const auto& t = mesh.triangles[f];
-    for (int k = 0; k < 3; ++k) {
-      const std::uint32_t a = t[static_cast<std::size_t>(k)];
-      const std::uint32_t b = t[static_cast<std::size_t>((k + 1) % 3)];
-      const std::uint64_t key =
-          (static_cast<std::uint64_t>(std::min(a, b)) << 32U) | std::max(a, b);
-      const auto [it, inserted] = first_face.emplace(key, f);
-      if (!inserted) shells.join(f, it->second);
-    }
-  }
-  // Volumes are summed about a vertex of each shell, not the origin, so
-  // that a tiny shell far from the origin keeps its sign.
-  std::unordered_map<std::uint32_t, double> six_volume;
-  std::unordered_map<std::uint32_t, glm::dvec3> origin;
-  for (std::uint32_t f = 0; f < n; ++f) {
-    const auto& t = mesh.triangles[f];
-    const std::uint32_t shell = shells.find(f);
-    const glm::dvec3 o =
-        origin.try_emplace(shell, mesh.vertices[t[0]]).first->second;
-    six_volume[shell] +=
-        glm::dot(mesh.vertices[t[0]] - o,
-                 glm::cross(mesh.vertices[t[1]] - o, mesh.vertices[t[2]] - o));
-  }
+CavitiesFilled fill_cavities(TriangleMesh mesh) {
+  const ShellLabels shells = label_shells(mesh);
+  const std::vector<double> volumes = shell_volumes(mesh, shells);
   // A shell without volume (a cavity that rounding flattened) goes too.
-  constexpr double kNoVolume = 6e-12;  // six times 1e-12 mm³
-  std::size_t removed = 0;
-  for (const auto& [root, volume] : six_volume) {
-    if (volume < kNoVolume) ++removed;
-  }
-  if (removed == 0) return 0;
+  constexpr double kNoVolumeMm3 = 1e-12;
+  const auto removed = static_cast<std::size_t>(
+      std::count_if(volumes.begin(), volumes.end(),
+                    [](double v) { return v < kNoVolumeMm3; }));
+  if (removed == 0) return {.mesh = std::move(mesh), .removed = 0};
   std::vector<std::array<std::uint32_t, 3>> kept;
-  kept.reserve(n);
-  for (std::uint32_t f = 0; f < n; ++f) {
-    if (six_volume[shells.find(f)] >= kNoVolume)
+  kept.reserve(mesh.triangles.size());
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    if (volumes[shells.of_triangle[f]] >= kNoVolumeMm3) {
       kept.push_back(mesh.triangles[f]);
+    }
   }
   mesh.triangles = std::move(kept);
   remove_unused_vertices(mesh);
-  return removed;
+  return {.mesh = std::move(mesh), .removed = removed};
 }
 
 TriangleMesh round_to_float(const TriangleMesh& mesh) {

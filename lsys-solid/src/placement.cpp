@@ -122,11 +122,12 @@ glm::dvec3 on_bed(const Placement& placement, const glm::dvec3& p) {
   return turned_to_z(placement.plane_normal, p) + placement.moved_by_mm;
 }
 
-Placement place_on_bed(std::vector<Part>& parts, Base base, double wall_mm,
-                       double tolerance_mm,
-                       const std::optional<SkeletonPlane>& plane) {
+Placed place_on_bed(std::vector<Part> parts, const PlacementOptions& options) {
+  const Base base = options.base;
+  const double wall_mm = options.wall_mm;
+  const std::optional<SkeletonPlane>& plane = options.plane;
   Placement placement;
-  if (parts.empty()) return placement;
+  if (parts.empty()) return {.parts = std::move(parts), .placement = placement};
   if (base == Base::Auto && plane) {
     for (Part& part : parts) {
       for (glm::dvec3& p : part.mesh.vertices) {
@@ -146,7 +147,7 @@ Placement place_on_bed(std::vector<Part>& parts, Base base, double wall_mm,
         std::max(0.0, plane_z + move.z - placement.cut_depth_mm);
     placement.footprint_mm =
         std::min(box.max.x - box.min.x, box.max.y - box.min.y);
-    return placement;
+    return {.parts = std::move(parts), .placement = placement};
   }
   const Box box = bounds(parts);
   const glm::dvec3 move(-(box.min.x + box.max.x) / 2.0,
@@ -186,7 +187,7 @@ Placement place_on_bed(std::vector<Part>& parts, Base base, double wall_mm,
   const bool wanted =
       base == Base::Disc ||
       (base == Base::Auto && placement.footprint_mm < kTipping * height);
-  if (!wanted) return placement;
+  if (!wanted) return {.parts = std::move(parts), .placement = placement};
   const glm::dvec2 centre = (foot_min + foot_max) / 2.0;
   const glm::dvec2 balance =
       mass > 0.0 ? glm::dvec2(moment.x, moment.y) / mass : centre;
@@ -201,7 +202,7 @@ Placement place_on_bed(std::vector<Part>& parts, Base base, double wall_mm,
   placement.moved_by_mm += lift;
   // Sides from the chord tolerance, as the tubes', but at least 32: a disc
   // is seen whole.
-  const int m = std::max(32, tube_sides(radius, tolerance_mm));
+  const int m = std::max(32, tube_sides(radius, options.tolerance_mm));
   parts.push_back(Part{disc(centre, radius, thickness, m), "base disc"});
   // Centre the model with its base.
   const Box all = bounds(parts);
@@ -212,7 +213,7 @@ Placement place_on_bed(std::vector<Part>& parts, Base base, double wall_mm,
   placement.has_base = true;
   placement.base_radius_mm = radius;
   placement.base_thickness_mm = thickness;
-  return placement;
+  return {.parts = std::move(parts), .placement = placement};
 }
 
 }  // namespace lsolid

@@ -96,7 +96,7 @@ std::vector<std::string> print_setting_names() {
 }
 
 PrintSettings resolve_print_settings(const lsys::Grammar& grammar,
-                                     const CommandLinePrint& command_line) {
+                                     const PrintOverrides& command_line) {
   PrintSettings file;
   int sizes = 0;
   std::size_t second_size = 0;
@@ -137,22 +137,24 @@ PrintSettings resolve_print_settings(const lsys::Grammar& grammar,
       if (s.key == "scale") file.scale_mm_per_unit = mm;
     }
   }
-  const PrintSettings& given = command_line.settings;
-  if (sizes > 1 && !command_line.sets_size) {
+  const PrintOverrides& given = command_line;
+  const bool sets_size =
+      given.height_mm || given.size_mm || given.scale_mm_per_unit;
+  if (sizes > 1 && !sets_size) {
     throw lsys::error_at(*grammar.source, second_size,
                          "give one of height, size and scale, not several");
   }
   PrintSettings out = file;
-  if (command_line.sets_size) {
+  if (sets_size) {
     out.height_mm = given.height_mm;
     out.size_mm = given.size_mm;
     out.scale_mm_per_unit = given.scale_mm_per_unit;
   }
-  if (command_line.sets_wall) out.wall_mm = given.wall_mm;
-  if (command_line.sets_tolerance) out.tolerance_mm = given.tolerance_mm;
-  if (command_line.sets_base) out.base = given.base;
-  if (command_line.sets_colors) out.colors = given.colors;
-  if (command_line.sets_profile) out.profile = given.profile;
+  out.wall_mm = given.wall_mm.value_or(out.wall_mm);
+  out.tolerance_mm = given.tolerance_mm.value_or(out.tolerance_mm);
+  out.base = given.base.value_or(out.base);
+  out.profile = given.profile.value_or(out.profile);
+  if (given.colors) out.colors = *given.colors;
   return out;
 }
 

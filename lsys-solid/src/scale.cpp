@@ -7,6 +7,7 @@
 #include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
 
+#include "lsolid/defaults.hpp"
 #include "lsolid/errors.hpp"
 #include "lsolid/mesh.hpp"
 
@@ -45,8 +46,8 @@ Box model_box(const lsys::Skeleton& s, double scale, double wall_mm) {
 
 }  // namespace
 
-ScaledSkeleton scale_to_print(const lsys::Skeleton& skeleton,
-                              const PrintSettings& settings) {
+double estimate_scale(const lsys::Skeleton& skeleton,
+                      const PrintSettings& settings) {
   if (lsys::draws_nothing(skeleton)) {
     throw GeometryError(
         "nothing to build: the L-system draws no segment, polygon, sphere or "
@@ -57,8 +58,8 @@ ScaledSkeleton scale_to_print(const lsys::Skeleton& skeleton,
     scale = *settings.scale_mm_per_unit;
   } else {
     const bool by_height = settings.height_mm.has_value();
-    const double target =
-        by_height ? *settings.height_mm : settings.size_mm.value_or(100.0);
+    const double target = by_height ? *settings.height_mm
+                                    : settings.size_mm.value_or(kDefaultSizeMm);
     const auto extent = [&](double s) {
       const glm::dvec3 size = model_box(skeleton, s, 0.0).size();
       return by_height ? size.z : std::max({size.x, size.y, size.z});
@@ -79,24 +80,36 @@ ScaledSkeleton scale_to_print(const lsys::Skeleton& skeleton,
       scale *= target / actual;
     }
   }
+  return scale;
+}
+
+ScaledSkeleton scale_skeleton(const lsys::Skeleton& skeleton,
+                              double mm_per_unit, double wall_mm) {
+  const double scale = mm_per_unit;
   ScaledSkeleton out{skeleton, scale};
   for (lsys::Segment& seg : out.skeleton.segments) {
     seg.p0 *= scale;
     seg.p1 *= scale;
-    seg.start_diameter = std::max(seg.start_diameter * scale, settings.wall_mm);
-    seg.end_diameter = std::max(seg.end_diameter * scale, settings.wall_mm);
+    seg.start_diameter = std::max(seg.start_diameter * scale, wall_mm);
+    seg.end_diameter = std::max(seg.end_diameter * scale, wall_mm);
   }
   for (lsys::Polygon& polygon : out.skeleton.polygons) {
     for (glm::dvec3& p : polygon.points) p *= scale;
   }
   for (lsys::Sphere& ball : out.skeleton.spheres) {
     ball.center *= scale;
-    ball.diameter = std::max(ball.diameter * scale, settings.wall_mm);
+    ball.diameter = std::max(ball.diameter * scale, wall_mm);
   }
   for (lsys::Sheet& sheet : out.skeleton.sheets) {
     for (glm::dvec3& p : sheet.points) p *= scale;
   }
   return out;
+}
+
+ScaledSkeleton scale_to_print(const lsys::Skeleton& skeleton,
+                              const PrintSettings& settings) {
+  return scale_skeleton(skeleton, estimate_scale(skeleton, settings),
+                        settings.wall_mm);
 }
 
 }  // namespace lsolid

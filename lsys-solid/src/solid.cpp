@@ -19,6 +19,7 @@
 #include "lsolid/containment.hpp"
 #include "lsolid/cut.hpp"
 #include "lsolid/decimate.hpp"
+#include "lsolid/defaults.hpp"
 #include "lsolid/errors.hpp"
 #include "lsolid/footprint.hpp"
 #include "lsolid/parts.hpp"
@@ -43,7 +44,6 @@ constexpr double kSizeRefused = 0.01;
 // wide, 73%).
 constexpr double kWideRatio = 1.0;
 constexpr double kLumpFill = 0.5;
-constexpr double kDefaultSizeMm = 100.0;  // as scale_to_print's default
 
 using Progress = std::function<void(std::string_view, double)>;
 
@@ -100,32 +100,39 @@ double clear_cut_z(const TriangleMesh& mesh, double z, double depth) {
   return best;
 }
 
-// The mesh cut at z_mm, moved down onto z = 0, rounded and mended; empty
+// A mesh cut flat and moved down onto the bed, and what rounding it took.
+struct Lowered {
+  TriangleMesh mesh;
+  RoundingStats rounding;
+  std::size_t cavities_filled = 0;
+};
+
+// The mesh cut at z_mm, moved down onto z = 0, rounded and mended; nothing
 // if CGAL cannot cut it.
-TriangleMesh cut_and_lower(const TriangleMesh& mesh, double z_mm,
-                           const SolidOptions& options, SolidReport& report) {
-  TriangleMesh cut;
-  try {
-    cut = cut_below(mesh, z_mm);
-  } catch (const std::exception&) {  // GeometryError, or CGAL's checks
-    return {};
-  }
-  for (glm::dvec3& p : cut.vertices) p.z -= z_mm;
-  cut = round_and_repair(cut, options.float_coordinates, report.rounding);
-  report.cavities_filled += remove_cavities(cut);
-  return cut;
+std::optional<Lowered> cut_and_lower(const TriangleMesh& mesh, double z_mm,
+                                     bool float_coordinates) {
+  std::optional<TriangleMesh> cut = cut_below(mesh, z_mm);
+  if (!cut) return std::nullopt;
+  for (glm::dvec3& p : cut->vertices) p.z -= z_mm;
+  Rounded rounded =
+      round_and_repair(*cut, {.float_coordinates = float_coordinates});
+  CavitiesFilled filled = fill_cavities(std::move(rounded.mesh));
+  return Lowered{.mesh = std::move(filled.mesh),
+                 .rounding = rounded.stats,
+                 .cavities_filled = filled.removed};
 }
 
 // Cuts the united model's underside flat at the placement's height, moved
 // clear of every vertex, and moves it down onto the bed. A cut that would
 // not be printable is refused and the model left lying on its round
-// undersides.
+// undersides; the placement says which.
 void cut_underside(TriangleMesh& mesh, Placement& placement,
                    const SolidOptions& options, SolidReport& report) {
   const double z =
       clear_cut_z(mesh, placement.cut_z_mm, placement.cut_depth_mm);
-  TriangleMesh cut = cut_and_lower(mesh, z, options, report);
-  if (cut.triangles.empty() || !validate(cut).is_printable()) {
+  std::optional<Lowered> cut =
+      cut_and_lower(mesh, z, options.float_coordinates);
+  if (!cut || !validate(cut->mesh).is_printable()) {
     placement.cut_refused = true;
     placement.cut_z_mm = 0.0;
     placement.cut_depth_mm = 0.0;
@@ -134,7 +141,9 @@ void cut_underside(TriangleMesh& mesh, Placement& placement,
   placement.cut_depth_mm += placement.cut_z_mm - z;
   placement.cut_z_mm = z;
   placement.moved_by_mm.z -= z;
-  mesh = std::move(cut);
+  mesh = std::move(cut->mesh);
+  accumulate(report.rounding, cut->rounding);
+  report.cavities_filled += cut->cavities_filled;
 }
 
 // How far below a part's surface a witness must lie to be required inside
@@ -276,25 +285,19 @@ void decimate_and_check(TriangleMesh& mesh, const PartsKept& kept,
                         Stopwatch& clock, const Progress& tell) {
   if (options.unite && options.decimate) {
     tell("decimation", 0.0);
-    Decimated decimated;
-    try {
-      decimated = lsolid::decimate(
-          mesh, {.tolerance_mm = options.print.tolerance_mm,
-                 .max_triangles = options.max_triangles,
-                 .progress = [&](double done) { tell("decimation", done); }});
-    } catch (const std::exception&) {
-      // A union that is not a 2-manifold cannot be decimated (GeometryError;
-      // CGAL's checks throw too); it is written as it is and its check says
-      // why.
-      decimated.mesh.triangles.clear();
-    }
+    // A union that cannot be decimated is checked and written as it is,
+    // and its check says why.
+    Decimated decimated = lsolid::decimate(
+        mesh, {.tolerance_mm = options.print.tolerance_mm,
+               .max_triangles = options.max_triangles,
+               .progress = [&](double done) { tell("decimation", done); }});
     report.decimation = decimated.stats;
     report.seconds.decimate = clock.lap();
     tell("check", 0.0);
     // The guard keeps every collapse valid; checking the result anyway
     // costs a second and means a failure ships the undecimated mesh, not a
     // broken one.
-    if (!decimated.mesh.triangles.empty()) {
+    if (decimated.refused.empty()) {
       report.validation = validate(decimated.mesh);
       if (!report.validation.is_printable()) {
         report.decimation_discarded = "failed the check";
@@ -329,22 +332,29 @@ void unite_and_finish(std::vector<Part> parts, const SolidOptions& options,
   PartsKept kept;
   if (options.unite) kept = parts_kept(parts);
   if (options.unite) {
-    UnionResult united = union_parts(
-        std::move(parts), [&](double done) { tell("union", done); },
-        [&](double seconds) {
-          if (options.expect) options.expect("union", seconds);
-        });
-    mesh = std::move(united.mesh);
+    UnionResult united =
+        union_parts(std::move(parts),
+                    {.progress = [&](double done) { tell("union", done); },
+                     .expect =
+                         [&](double seconds) {
+                           if (options.expect) options.expect("union", seconds);
+                         }});
+    CavitiesFilled filled = fill_cavities(std::move(united.mesh));
+    mesh = std::move(filled.mesh);
     report.union_stats = united.stats;
-    report.cavities_filled = remove_cavities(mesh);
+    report.cavities_filled = filled.removed;
   } else {
     for (const Part& part : parts) append(mesh, part.mesh);
   }
   report.seconds.unite = clock.lap();
   tell("rounding", 0.0);
   if (options.unite) {
-    mesh = round_and_repair(mesh, options.float_coordinates, report.rounding);
-    report.cavities_filled += remove_cavities(mesh);
+    Rounded rounded = round_and_repair(
+        mesh, {.float_coordinates = options.float_coordinates});
+    accumulate(report.rounding, rounded.stats);
+    CavitiesFilled filled = fill_cavities(std::move(rounded.mesh));
+    mesh = std::move(filled.mesh);
+    report.cavities_filled += filled.removed;
     check_union_kept(mesh, kept, report);
     if (report.placement.lies_flat && report.placement.cut_z_mm > 0.0) {
       cut_underside(mesh, report.placement, options, report);
@@ -533,7 +543,10 @@ void extrude_and_finish(const FlatModel& flat, const std::vector<Part>& parts,
   report.seconds.unite = clock.lap();
   tell("union", 1.0);
   tell("rounding", 0.0);
-  mesh = round_and_repair(mesh, options.float_coordinates, report.rounding);
+  Rounded rounded =
+      round_and_repair(mesh, {.float_coordinates = options.float_coordinates});
+  mesh = std::move(rounded.mesh);
+  accumulate(report.rounding, rounded.stats);
   placement.moved_by_mm.z -= placement.cut_z_mm;
   check_witnesses(mesh, lowered(kept.witnesses, placement.cut_z_mm), kept,
                   "the footprint", "; --profile round builds it as round tubes",
@@ -582,9 +595,10 @@ std::vector<ColoredMesh> flat_color_volumes(const FlatModel& flat,
     const Footprint footprint = footprint_union(own, below);
     below.insert(below.end(), own.begin(), own.end());
     if (footprint.rings.empty()) continue;
-    RoundingStats rounding;
-    TriangleMesh volume = round_and_repair(extrude(footprint, flat.height_mm),
-                                           options.float_coordinates, rounding);
+    TriangleMesh volume =
+        round_and_repair(extrude(footprint, flat.height_mm),
+                         {.float_coordinates = options.float_coordinates})
+            .mesh;
     add_volume(volumes, std::move(volume), material);
   }
   return volumes;
@@ -625,19 +639,21 @@ std::vector<ColoredMesh> color_volumes(std::vector<Part> parts,
           fmt::format("the volume of colour {} is not printable: {}", color,
                       fmt::join(scratch.validation.problems(), "; ")));
     }
-    RoundingStats rounding;
+    const RoundingOptions rounding{.float_coordinates =
+                                       options.float_coordinates};
     TriangleMesh volume =
         filled.triangles.empty()
             ? own
-            : round_and_repair(subtract(own, filled), options.float_coordinates,
-                               rounding);
+            : round_and_repair(subtract(own, filled), rounding).mesh;
     const Placement& placed = whole.report.placement;
     if (!volume.triangles.empty() && placed.lies_flat && placed.cut_z_mm > 0) {
-      volume = cut_and_lower(volume, placed.cut_z_mm, options, scratch);
-      if (volume.triangles.empty()) {
+      std::optional<Lowered> cut =
+          cut_and_lower(volume, placed.cut_z_mm, options.float_coordinates);
+      if (!cut || cut->mesh.triangles.empty()) {
         throw GeometryError(fmt::format(
             "the volume of colour {} could not be cut flat", color));
       }
+      volume = std::move(cut->mesh);
     }
     if (!volume.triangles.empty()) {
       add_volume(volumes, std::move(volume), color);
@@ -649,8 +665,8 @@ std::vector<ColoredMesh> color_volumes(std::vector<Part> parts,
       both.push_back(Part{.mesh = std::move(filled), .label = "lower colours"});
       both.push_back(Part{.mesh = std::move(own),
                           .label = fmt::format("colour {}", color)});
-      filled = round_and_repair(union_parts(std::move(both)).mesh,
-                                options.float_coordinates, rounding);
+      filled =
+          round_and_repair(union_parts(std::move(both)).mesh, rounding).mesh;
     }
     tell("volumes", double(++done) / double(by_color.size()));
   }
@@ -767,7 +783,7 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   // hulls and a base disc reach beyond, so the placed parts are measured and
   // the scale corrected until the size asked for holds (the longest side,
   // or the height, of everything printed, base included).
-  PrintSettings print = options.print;
+  const PrintSettings& print = options.print;
   ScaledSkeleton scaled;
   PartSet parts;
   const bool sized = !options.print.scale_mm_per_unit.has_value();
@@ -778,8 +794,9 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   // prints, its outlines and height, not by its round parts.
   FlatModel flat;
   bool is_flat = false;
+  double mm_per_unit = estimate_scale(skeleton, print);
   for (int pass = 0; pass < kSizePasses; ++pass) {
-    scaled = scale_to_print(skeleton, print);
+    scaled = scale_skeleton(skeleton, mm_per_unit, print.wall_mm);
     refuse_beyond_a_kilometre(grammar, scaled);
     const std::optional<SkeletonPlane> plane =
         options.unite ? skeleton_plane(scaled.skeleton, print.wall_mm)
@@ -797,18 +814,20 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
            .unite_coplanar_polygons = unite_coplanar});
     };
     const bool maybe_flat = plane && print.profile == Profile::Flat;
-    parts = build(!maybe_flat);
-    report.placement =
-        place_on_bed(parts.parts, options.print.base, options.print.wall_mm,
-                     options.print.tolerance_mm, plane);
+    const PlacementOptions placing{.base = print.base,
+                                   .wall_mm = print.wall_mm,
+                                   .tolerance_mm = print.tolerance_mm,
+                                   .plane = plane};
+    const auto place = [&](bool unite_coplanar) {
+      parts = build(unite_coplanar);
+      Placed placed = place_on_bed(std::move(parts.parts), placing);
+      parts.parts = std::move(placed.parts);
+      report.placement = placed.placement;
+    };
+    place(!maybe_flat);
     is_flat = options.unite && report.placement.lies_flat &&
               print.profile == Profile::Flat;
-    if (maybe_flat && !is_flat) {
-      parts = build(true);
-      report.placement =
-          place_on_bed(parts.parts, options.print.base, options.print.wall_mm,
-                       options.print.tolerance_mm, plane);
-    }
+    if (maybe_flat && !is_flat) place(true);
     if (is_flat) {
       flat = flat_model(scaled.skeleton, report.placement, print);
     }
@@ -817,9 +836,7 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
     actual =
         options.print.height_mm ? size.z : std::max({size.x, size.y, size.z});
     if (std::fabs(actual - wanted) <= kSizeTolerance * wanted) break;
-    print.scale_mm_per_unit = scaled.mm_per_unit * wanted / actual;
-    print.height_mm.reset();
-    print.size_mm.reset();
+    mm_per_unit = scaled.mm_per_unit * wanted / actual;
   }
   if (sized && !parts.parts.empty() &&
       std::fabs(actual - wanted) > kSizeRefused * wanted) {

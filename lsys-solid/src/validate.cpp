@@ -12,6 +12,7 @@
 #include <unordered_map>
 
 #include "cgal/exact_checks.hpp"
+#include "shells.hpp"
 #include "union_find.hpp"
 
 namespace lsolid {
@@ -21,10 +22,6 @@ struct EdgeUse {
   std::uint32_t faces = 0;
   std::uint32_t forward = 0;  // uses running from the smaller index
 };
-
-std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-  return (static_cast<std::uint64_t>(std::min(a, b)) << 32U) | std::max(a, b);
-}
 
 // Vertices whose incident triangles do not form one edge-connected fan.
 std::size_t count_non_manifold_vertices(const TriangleMesh& mesh) {
@@ -84,40 +81,19 @@ ValidationReport validate(const TriangleMesh& mesh) {
   }
   r.non_manifold_vertices = count_non_manifold_vertices(mesh);
 
-  UnionFind shells(mesh.triangles.size());
-  std::unordered_map<std::uint64_t, std::uint32_t> first_face;
-  for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f) {
-    const auto& t = mesh.triangles[f];
-    for (int k = 0; k < 3; ++k) {
-      const auto key = edge_key(t[static_cast<std::size_t>(k)],
-                                t[static_cast<std::size_t>((k + 1) % 3)]);
-      const auto [it, inserted] = first_face.emplace(key, f);
-      if (!inserted) shells.join(f, it->second);
-    }
-  }
-  std::unordered_map<std::uint32_t, std::uint32_t> shell_of_root;
-  for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f) {
-    shell_of_root.emplace(shells.find(f),
-                          static_cast<std::uint32_t>(shell_of_root.size()));
-  }
-  r.shells = shell_of_root.size();
+  const ShellLabels shells = label_shells(mesh);
+  const std::vector<double> volumes = shell_volumes(mesh, shells);
+  r.shells = shells.count;
   r.shell_list.resize(r.shells);
-  // Volumes are summed about a vertex of each shell rather than the origin,
-  // so that a small shell far out keeps its digits.
-  std::vector<glm::dvec3> origin(r.shells);
+  for (std::size_t s = 0; s < r.shells; ++s) {
+    r.shell_list[s].volume_mm3 = volumes[s];
+  }
   for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f) {
-    const std::uint32_t index = shell_of_root[shells.find(f)];
-    Shell& shell = r.shell_list[index];
-    const auto& t = mesh.triangles[f];
-    const glm::dvec3& a = mesh.vertices[t[0]];
-    const glm::dvec3& b = mesh.vertices[t[1]];
-    const glm::dvec3& c = mesh.vertices[t[2]];
-    if (shell.triangles++ == 0) origin[index] = a;
-    const glm::dvec3& o = origin[index];
-    shell.volume_mm3 += glm::dot(a - o, glm::cross(b - o, c - o)) / 6.0;
-    for (const glm::dvec3& p : {a, b, c}) {
-      shell.bounds.min = glm::min(shell.bounds.min, p);
-      shell.bounds.max = glm::max(shell.bounds.max, p);
+    Shell& shell = r.shell_list[shells.of_triangle[f]];
+    ++shell.triangles;
+    for (const std::uint32_t v : mesh.triangles[f]) {
+      shell.bounds.min = glm::min(shell.bounds.min, mesh.vertices[v]);
+      shell.bounds.max = glm::max(shell.bounds.max, mesh.vertices[v]);
     }
   }
   std::stable_sort(r.shell_list.begin(), r.shell_list.end(),

@@ -57,12 +57,14 @@ TEST(Boolean, CountsItsContactsAndTellsItsExpectedTimeBeforeTheFirstBoolean) {
                           {box_mesh({9, 9, 9}, {10, 10, 10}), "c"}};
   std::vector<std::string> told;
   double expected = -1.0;
-  const UnionResult u = union_parts(
-      std::move(parts), [&](double) { told.emplace_back("progress"); },
-      [&](double seconds) {
-        told.emplace_back("expect");
-        expected = seconds;
-      });
+  const UnionResult u =
+      union_parts(std::move(parts),
+                  {.progress = [&](double) { told.emplace_back("progress"); },
+                   .expect =
+                       [&](double seconds) {
+                         told.emplace_back("expect");
+                         expected = seconds;
+                       }});
   EXPECT_EQ(u.stats.contacts, 12U);
   EXPECT_DOUBLE_EQ(expected, 12 * kUnionSecondsPerContact);
   ASSERT_FALSE(told.empty());
@@ -101,7 +103,8 @@ TEST(Boolean, ReportsProgressUpToTheEnd) {
   }
   std::vector<double> told;
   const UnionResult u =
-      union_parts(std::move(parts), [&](double done) { told.push_back(done); });
+      union_parts(std::move(parts),
+                  {.progress = [&](double done) { told.push_back(done); }});
   ASSERT_FALSE(told.empty());
   EXPECT_TRUE(std::is_sorted(told.begin(), told.end()));
   EXPECT_GT(told.front(), 0.0);

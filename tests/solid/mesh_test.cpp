@@ -36,5 +36,30 @@ TEST(Mesh, RoundsToFloatsAndMergesVerticesThatMeet) {
   EXPECT_EQ(r.triangles[1][0], 0U);
 }
 
+// A box with a sealed cavity: the cavity is its own shell, facing inward.
+TriangleMesh box_with_cavity() {
+  TriangleMesh mesh = box_mesh({0, 0, 0}, {4, 4, 4});
+  TriangleMesh cavity = box_mesh({1, 1, 1}, {2, 2, 2});
+  for (auto& t : cavity.triangles) std::swap(t[1], t[2]);
+  append(mesh, cavity);
+  return mesh;
+}
+
+TEST(Mesh, FillsSealedCavitiesAndKeepsTheOuterSurface) {
+  const CavitiesFilled filled = fill_cavities(box_with_cavity());
+  EXPECT_EQ(filled.removed, 1U);
+  EXPECT_EQ(filled.mesh.triangles.size(), 12U);
+  EXPECT_EQ(filled.mesh.vertices.size(), 8U);
+  EXPECT_DOUBLE_EQ(signed_volume(filled.mesh), 64.0);
+}
+
+TEST(Mesh, LeavesAMeshWithoutCavitiesAsItIs) {
+  TriangleMesh two = box_mesh({0, 0, 0}, {1, 1, 1});
+  append(two, box_mesh({5, 0, 0}, {6, 1, 1}));
+  const CavitiesFilled filled = fill_cavities(two);
+  EXPECT_EQ(filled.removed, 0U);
+  EXPECT_EQ(filled.mesh.triangles, two.triangles);
+}
+
 }  // namespace
 }  // namespace lsolid

@@ -19,7 +19,10 @@ using testing::expect_printable;
 
 TEST(Placement, CentresTheModelAndPutsItsLowestPointAtZeroWithoutABase) {
   std::vector<Part> parts{{box_mesh({10, 20, 5}, {30, 40, 25}), "cube"}};
-  const Placement p = place_on_bed(parts, Base::Auto, 0.8, 0.05);
+  const Placed placed = place_on_bed(
+      parts, {.base = Base::Auto, .wall_mm = 0.8, .tolerance_mm = 0.05});
+  parts = placed.parts;
+  const Placement& p = placed.placement;
   EXPECT_FALSE(p.has_base);  // a cube stands on its whole face
   EXPECT_EQ(parts.size(), 1U);
   const Box b = bounds(parts);
@@ -35,7 +38,10 @@ TEST(Placement, StandsATallThinModelOnADisc) {
   // mass off the foot.
   std::vector<Part> parts{{box_mesh({0, 0, 0}, {1, 1, 50}), "stick"},
                           {box_mesh({0, 0, 40}, {20, 1, 41}), "arm"}};
-  const Placement p = place_on_bed(parts, Base::Auto, 0.8, 0.05);
+  const Placed placed = place_on_bed(
+      parts, {.base = Base::Auto, .wall_mm = 0.8, .tolerance_mm = 0.05});
+  parts = placed.parts;
+  const Placement& p = placed.placement;
   ASSERT_TRUE(p.has_base);
   ASSERT_EQ(parts.size(), 3U);
   EXPECT_EQ(parts.back().label, "base disc");
@@ -65,9 +71,15 @@ TEST(Placement, StandsATallThinModelOnADisc) {
 
 TEST(Placement, AddsADiscOnlyWhenAskedOrNeeded) {
   std::vector<Part> cube{{box_mesh({0, 0, 0}, {10, 10, 10}), "cube"}};
-  EXPECT_TRUE(place_on_bed(cube, Base::Disc, 0.8, 0.05).has_base);
+  EXPECT_TRUE(
+      place_on_bed(cube,
+                   {.base = Base::Disc, .wall_mm = 0.8, .tolerance_mm = 0.05})
+          .placement.has_base);
   std::vector<Part> stick{{box_mesh({0, 0, 0}, {1, 1, 50}), "stick"}};
-  EXPECT_FALSE(place_on_bed(stick, Base::None, 0.8, 0.05).has_base);
+  const Placed standing = place_on_bed(
+      stick, {.base = Base::None, .wall_mm = 0.8, .tolerance_mm = 0.05});
+  EXPECT_FALSE(standing.placement.has_base);
+  stick = standing.parts;
   EXPECT_EQ(stick.size(), 1U);
   EXPECT_EQ(bounds(stick[0].mesh).min.z, 0.0);
 }
@@ -108,7 +120,12 @@ TEST(Placement, LaysAPlanarModelFlatWithACutBelowItsPlane) {
   std::vector<Part> parts{{box_mesh({0, -0.5, 0}, {10, 0.5, 10}), "plate"}};
   const SkeletonPlane plane{
       .normal = {0, 1, 0}, .point = {0, 0, 0}, .thinnest_radius_mm = 0.5};
-  const Placement p = place_on_bed(parts, Base::Auto, 0.8, 0.05, plane);
+  const Placed placed = place_on_bed(parts, {.base = Base::Auto,
+                                             .wall_mm = 0.8,
+                                             .tolerance_mm = 0.05,
+                                             .plane = plane});
+  parts = placed.parts;
+  const Placement& p = placed.placement;
   EXPECT_TRUE(p.lies_flat);
   EXPECT_FALSE(p.has_base);
   const Box box = bounds(parts);
@@ -120,7 +137,11 @@ TEST(Placement, LaysAPlanarModelFlatWithACutBelowItsPlane) {
   EXPECT_NEAR(p.cut_z_mm, 0.25, 1e-12);  // the plane is at z = 0.5
   // With an explicit base it stands, as before.
   std::vector<Part> standing{{box_mesh({0, -0.5, 0}, {10, 0.5, 10}), "plate"}};
-  EXPECT_FALSE(place_on_bed(standing, Base::None, 0.8, 0.05, plane).lies_flat);
+  EXPECT_FALSE(place_on_bed(standing, {.base = Base::None,
+                                       .wall_mm = 0.8,
+                                       .tolerance_mm = 0.05,
+                                       .plane = plane})
+                   .placement.lies_flat);
 }
 
 }  // namespace

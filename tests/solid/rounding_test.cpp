@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "lsolid/boolean.hpp"
+#include "lsolid/errors.hpp"
 #include "support/mesh_checks.hpp"
 
 namespace lsolid {
@@ -22,8 +23,8 @@ TEST(Rounding, MendsSliversThatFloatsCannotHold) {
   const TriangleMesh united = union_parts(std::move(parts)).mesh;
   const ValidationReport naive = validate(round_to_float(united));
   EXPECT_FALSE(naive.is_printable());
-  RoundingStats stats;
-  const TriangleMesh repaired = round_and_repair(united, true, stats);
+  const auto [repaired, stats] =
+      round_and_repair(united, {.float_coordinates = true});
   expect_printable(repaired);
   EXPECT_GT(stats.slivers_removed, 0U);
   for (const glm::dvec3& p : repaired.vertices) {
@@ -33,10 +34,33 @@ TEST(Rounding, MendsSliversThatFloatsCannotHold) {
   EXPECT_NEAR(signed_volume(repaired), 1.5, 1e-4);
 }
 
+TEST(Rounding, RefusesAMeshThatIsNotA2Manifold) {
+  TriangleMesh fan = box_mesh({0, 0, 0}, {1, 1, 1});
+  fan.triangles.push_back(fan.triangles[0]);
+  EXPECT_THROW((void)round_and_repair(fan), GeometryError);
+}
+
+TEST(Rounding, AddsUpWhatLaterRoundingsMended) {
+  RoundingStats total{.passes = 3,
+                      .slivers_removed = 2,
+                      .faces_rebuilt = 1,
+                      .repairs_refused = 0,
+                      .volume_change_mm3 = -0.5};
+  accumulate(total, {.passes = 1,
+                     .slivers_removed = 4,
+                     .faces_rebuilt = 0,
+                     .repairs_refused = 1,
+                     .volume_change_mm3 = 0.25});
+  EXPECT_EQ(total.passes, 1);
+  EXPECT_EQ(total.slivers_removed, 6U);
+  EXPECT_EQ(total.faces_rebuilt, 1U);
+  EXPECT_EQ(total.repairs_refused, 1U);
+  EXPECT_DOUBLE_EQ(total.volume_change_mm3, -0.25);
+}
+
 TEST(Rounding, LeavesACleanMeshAsItIs) {
-  RoundingStats stats;
-  const TriangleMesh box =
-      round_and_repair(box_mesh({0, 0, 0}, {1, 2, 3}), true, stats);
+  const auto [box, stats] = round_and_repair(box_mesh({0, 0, 0}, {1, 2, 3}),
+                                             {.float_coordinates = true});
   EXPECT_EQ(box.triangles.size(), 12U);
   EXPECT_EQ(stats.passes, 1);
   EXPECT_EQ(stats.slivers_removed, 0U);

@@ -339,9 +339,7 @@ TEST(Solid, ReadsPrintSettingsFromTheFileUnlessTheCommandLineGivesThem) {
   EXPECT_EQ(file.wall_mm, 1.5);
   EXPECT_EQ(file.height_mm, 40.0);
   const PrintSettings cli =
-      resolve_print_settings(g, {.settings = {.wall_mm = 0.4, .size_mm = 10.0},
-                                 .sets_size = true,
-                                 .sets_wall = true});
+      resolve_print_settings(g, {.wall_mm = 0.4, .size_mm = 10.0});
   EXPECT_EQ(cli.wall_mm, 0.4);
   EXPECT_FALSE(cli.height_mm.has_value());
   EXPECT_EQ(cli.size_mm, 10.0);

@@ -41,6 +41,17 @@ struct UnionResult {
   UnionStats stats;
 };
 
+/// What to tell while uniting.
+struct UnionOptions {
+  /// If not empty, called after each union with the fraction of the work
+  /// done (weighted by the operands' sizes), ending with 1.
+  std::function<void(double fraction)> progress;
+  /// If not empty, called once before the first boolean with the seconds
+  /// the union is expected to take: its contacts times
+  /// kUnionSecondsPerContact.
+  std::function<void(double seconds)> expect;
+};
+
 /// Unions closed parts into one closed 2-manifold mesh with CGAL's
 /// corefinement over exact constructions (Epeck). Parts whose boxes do not
 /// meet are batched into layers (concatenated, no boolean), filled greedily
@@ -54,14 +65,8 @@ struct UnionResult {
 /// @pre every part is closed and outward-oriented.
 /// @throws GeometryError naming the parts when a part is not a valid solid
 ///   or a union still fails.
-/// @param progress if not empty, called after each union with the fraction
-///   of the work done (weighted by the operands' sizes), ending with 1.
-/// @param expect if not empty, called once before the first boolean with
-///   the seconds the union is expected to take: its contacts times
-///   kUnionSecondsPerContact.
-[[nodiscard]] UnionResult union_parts(
-    std::vector<Part> parts, const std::function<void(double)>& progress = {},
-    const std::function<void(double seconds)>& expect = {});
+[[nodiscard]] UnionResult union_parts(std::vector<Part> parts,
+                                      const UnionOptions& options = {});
 
 /// What of `a` lies outside `b` (CGAL's corefinement over exact
 /// constructions), rounded to doubles: the new vertices lie on `b`'s

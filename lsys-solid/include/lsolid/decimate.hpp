@@ -5,7 +5,9 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
+#include <string>
 
+#include "lsolid/defaults.hpp"
 #include "lsolid/mesh.hpp"
 
 namespace lsolid {
@@ -14,7 +16,7 @@ namespace lsolid {
 struct DecimateOptions {
   /// How far the surface may move, in millimetres: the quadric error bound
   /// (a squared distance, so it is set to the square of this).
-  double tolerance_mm = 0.05;
+  double tolerance_mm = kDefaultToleranceMm;
   /// At most this many triangles. To reach it the tolerance is given up,
   /// never validity; the report says when it could not be reached.
   std::optional<std::size_t> max_triangles;
@@ -66,10 +68,14 @@ struct DecimateStats {
   int attempts = 0;
 };
 
-/// A decimated mesh and what it cost.
+/// A decimated mesh and what it cost, or why the mesh could not be
+/// decimated.
 struct Decimated {
-  TriangleMesh mesh;
+  TriangleMesh mesh;  ///< the input itself when `refused` says why
   DecimateStats stats;
+  /// Why nothing was decimated: the mesh is not a 2-manifold OpenMesh can
+  /// take, or a test inside the decimation failed. Empty when decimated.
+  std::string refused;
 };
 
 /// Removes triangles by halfedge collapses (OpenMesh's decimater with its
@@ -80,9 +86,10 @@ struct Decimated {
 /// Where the deviation measured afterwards exceeds the tolerance, it starts
 /// again from the input with the vetoes aiming lower (three runs at most);
 /// `stats.within_tolerance` says whether that succeeded.
-/// @pre `mesh` is closed, 2-manifold and free of self-intersections.
-/// @throws GeometryError if OpenMesh cannot take it as a 2-manifold, or the
-///   tolerance is not positive.
+/// A mesh that is not a 2-manifold is returned as it is, with the reason
+/// in `refused`.
+/// @pre `mesh` is closed and free of self-intersections.
+/// @throws GeometryError if the tolerance is not positive.
 [[nodiscard]] Decimated decimate(const TriangleMesh& mesh,
                                  const DecimateOptions& options = {});
 

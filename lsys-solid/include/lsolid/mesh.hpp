@@ -54,13 +54,18 @@ void append(TriangleMesh& mesh, const TriangleMesh& part);
 /// Drops the vertices no triangle uses, renumbering the rest in order.
 void remove_unused_vertices(TriangleMesh& mesh);
 
-/// Removes the shells that enclose negative volume: sealed cavities that a
-/// union leaves where parts surround empty space. Filling them changes no
-/// outer surface. Shells without volume (under 10⁻¹² mm³, such as a tiny
-/// cavity that rounding flattened) are removed too. Returns how many were
-/// removed.
+/// A mesh with its cavities filled, and how many there were.
+struct CavitiesFilled {
+  TriangleMesh mesh;
+  std::size_t removed = 0;  ///< shells removed
+};
+
+/// The mesh without the shells that enclose negative volume: sealed
+/// cavities that a union leaves where parts surround empty space. Filling
+/// them changes no outer surface. Shells without volume (under 10⁻¹² mm³,
+/// such as a tiny cavity that rounding flattened) are removed too.
 /// @pre the mesh is closed and consistently oriented.
-std::size_t remove_cavities(TriangleMesh& mesh);
+[[nodiscard]] CavitiesFilled fill_cavities(TriangleMesh mesh);
 
 /// The mesh with every coordinate rounded to the nearest float, as STL
 /// stores it, and vertices that become equal merged.

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "lsolid/defaults.hpp"
 #include "lsolid/mesh.hpp"
 #include "lsys/skeleton.hpp"
 
@@ -17,8 +18,8 @@ struct PartOptions {
   /// The thinnest tube's width; leaf plates are 5% thicker than such a
   /// tube across its corners (0.93 mm for 0.8 mm), so that veins in a leaf
   /// lie inside it.
-  double wall_mm = 0.8;
-  double tolerance_mm = 0.05;  ///< chord error of tube cross-sections
+  double wall_mm = kDefaultWallMm;
+  double tolerance_mm = kDefaultToleranceMm;  ///< chord error of tubes
   /// One colour per part: tubes end where the colour changes and branches
   /// of several colours meet at a joint sphere, not a hull. Coloured output
   /// needs it; it costs booleans in the union where colours change often.

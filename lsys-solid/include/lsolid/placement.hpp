@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "lsolid/defaults.hpp"
 #include "lsolid/mesh.hpp"
 #include "lsolid/print_settings.hpp"
 #include "lsys/skeleton.hpp"
@@ -55,6 +56,23 @@ struct SkeletonPlane {
 [[nodiscard]] std::optional<SkeletonPlane> skeleton_plane(
     const lsys::Skeleton& skeleton, double wall_mm);
 
+/// How to put the parts on the bed.
+struct PlacementOptions {
+  Base base = Base::Auto;
+  double wall_mm = kDefaultWallMm;  ///< sets the base disc's size
+  /// The chord tolerance of the base disc's sides.
+  double tolerance_mm = kDefaultToleranceMm;
+  /// The plane of a planar skeleton (skeleton_plane): with Base::Auto the
+  /// model lies flat in it.
+  std::optional<SkeletonPlane> plane;
+};
+
+/// Parts placed on the bed, and how.
+struct Placed {
+  std::vector<Part> parts;  ///< moved, and with a base disc last if any
+  Placement placement;
+};
+
 /// Puts the parts on the bed: centred on the origin in X and Y (with the
 /// base, if any), their lowest point at z = 0 (the union's lowest point is a
 /// part's vertex, so the written mesh rests there too). With `Base::Disc`, or
@@ -70,8 +88,7 @@ struct SkeletonPlane {
 /// thinnest radius below the plane, so that every branch touches the bed
 /// with a flat face and the thinnest keeps three quarters of its height.
 /// @pre every part is closed and outward-oriented.
-[[nodiscard]] Placement place_on_bed(
-    std::vector<Part>& parts, Base base, double wall_mm, double tolerance_mm,
-    const std::optional<SkeletonPlane>& plane = std::nullopt);
+[[nodiscard]] Placed place_on_bed(std::vector<Part> parts,
+                                  const PlacementOptions& options = {});
 
 }  // namespace lsolid

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "lsolid/colors.hpp"
+#include "lsolid/defaults.hpp"
 #include "lsys/grammar.hpp"
 
 namespace lsolid {
@@ -28,13 +29,14 @@ enum class Profile {
 };
 
 /// How to print: sizes in millimetres. At most one of height, size and
-/// scale is set; with none, the longest side becomes 100 mm.
+/// scale is set; with none, the longest side becomes kDefaultSizeMm.
 struct PrintSettings {
-  double wall_mm = 0.8;  ///< minimum wall: thinnest branch, leaf thickness
-  std::optional<double> height_mm;          ///< model height along Z
-  std::optional<double> size_mm;            ///< longest side
-  std::optional<double> scale_mm_per_unit;  ///< millimetres per model unit
-  double tolerance_mm = 0.05;  ///< chord error of tube cross-sections
+  /// Minimum wall: thinnest branch, leaf thickness.
+  double wall_mm = kDefaultWallMm;
+  std::optional<double> height_mm;            ///< model height along Z
+  std::optional<double> size_mm;              ///< longest side
+  std::optional<double> scale_mm_per_unit;    ///< millimetres per model unit
+  double tolerance_mm = kDefaultToleranceMm;  ///< chord error of tubes
   Base base = Base::Auto;
   Profile profile = Profile::Flat;  ///< of a model that lies flat
   /// The colour of each turtle colour index for 3MF and OBJ (`colors:
@@ -60,21 +62,25 @@ struct PrintSettings {
 /// to pass as lsys::ParseOptions::extra_settings.
 [[nodiscard]] std::vector<std::string> print_setting_names();
 
-/// Print settings given on the command line, and which of them it gives.
-struct CommandLinePrint {
-  PrintSettings settings;
-  bool sets_size = false;  ///< height, size or scale
-  bool sets_wall = false;
-  bool sets_tolerance = false;
-  bool sets_base = false;
-  bool sets_colors = false;
-  bool sets_profile = false;
+/// Print settings given on the command line: each one given overrides the
+/// file's, and a height, size or scale replaces every size the file gives.
+struct PrintOverrides {
+  std::optional<double> wall_mm;
+  /// At most one of the three.
+  std::optional<double> height_mm;
+  std::optional<double> size_mm;
+  std::optional<double> scale_mm_per_unit;
+  std::optional<double> tolerance_mm;
+  std::optional<Base> base;
+  std::optional<Profile> profile;
+  std::optional<std::vector<Rgb>> colors;
 };
 
 /// The print settings a file states, then those of the command line, which
-/// win: a size given on the command line replaces every size of the file.
-/// @throws lsys::ParseError at the file's value for a bad setting.
+/// win.
+/// @throws lsys::ParseError at the file's value for a bad setting, or at
+///   its second size when the file gives several and the command line none.
 [[nodiscard]] PrintSettings resolve_print_settings(
-    const lsys::Grammar& grammar, const CommandLinePrint& command_line = {});
+    const lsys::Grammar& grammar, const PrintOverrides& command_line = {});
 
 }  // namespace lsolid

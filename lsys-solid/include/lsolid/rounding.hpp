@@ -22,6 +22,23 @@ struct RoundingStats {
   double volume_change_mm3 = 0.0;
 };
 
+/// How to round.
+struct RoundingOptions {
+  /// Round to floats, as STL and 3MF store them; otherwise to doubles
+  /// (OFF and OBJ are written at full precision).
+  bool float_coordinates = true;
+};
+
+/// A rounded mesh and what it took.
+struct Rounded {
+  TriangleMesh mesh;
+  RoundingStats stats;
+};
+
+/// Adds what a later rounding of the same model mended to `total`: the
+/// counts and the volume change add up; `passes` becomes the later one's.
+void accumulate(RoundingStats& total, const RoundingStats& later);
+
 /// Rounds a union's coordinates to what the file will store (floats for STL)
 /// and mends what rounding breaks. An exact union has slivers, edges of
 /// 10⁻⁸ mm and near-tangent sheets (docs/design.md, "Rounding"); rounding
@@ -32,8 +49,8 @@ struct RoundingStats {
 /// coordinate of the result is representable in the output format, so
 /// validating the result validates the file.
 /// @pre the mesh is closed and 2-manifold.
-[[nodiscard]] TriangleMesh round_and_repair(const TriangleMesh& mesh,
-                                            bool float_coordinates,
-                                            RoundingStats& stats);
+/// @throws GeometryError if it is not a 2-manifold.
+[[nodiscard]] Rounded round_and_repair(const TriangleMesh& mesh,
+                                       const RoundingOptions& options = {});
 
 }  // namespace lsolid

@@ -37,6 +37,11 @@ namespace lsolid {
 namespace {
 
 constexpr double kPerturbationMm = 1e-5;
+// The direction of that shift: along no axis or diagonal, so that it moves
+// off the coincidences that lattice-like models make. It is the golden
+// section to three digits (kGolden); the digits stay as they are, since
+// every union that needed a retry was built and checked with them.
+constexpr std::array<double, 3> kShift{1.0, 0.618, 0.382};
 constexpr int kAttempts = 3;
 constexpr double kMendVolumeSlack = 1e-6;
 
@@ -139,12 +144,13 @@ bool round_new_points(ExactMesh& mesh) {
 // (ABOP fig. 1.24b) spent most of their time in GMP otherwise. Kept only
 // if the result is a closed, self-intersection-free surface.
 bool round_and_mend(ExactMesh& mesh) {
-  RoundingStats stats;
   const TriangleMesh rounded = to_triangle_mesh(mesh);
-  const TriangleMesh mended = round_and_repair(rounded, false, stats);
-  const InexactMesh check = to_surface_mesh<InexactMesh>(mended);
-  if (check.number_of_faces() == 0 || !CGAL::is_closed(check) ||
-      !CGAL::is_valid_polygon_mesh(check) || PMP::does_self_intersect(check)) {
+  const TriangleMesh mended =
+      round_and_repair(rounded, {.float_coordinates = false}).mesh;
+  const std::optional<InexactMesh> check = to_surface_mesh<InexactMesh>(mended);
+  if (!check || check->number_of_faces() == 0 || !CGAL::is_closed(*check) ||
+      !CGAL::is_valid_polygon_mesh(*check) ||
+      PMP::does_self_intersect(*check)) {
     return false;
   }
   // Rebuilding intersecting faces can delete whole thin pieces (leaf plates
@@ -155,7 +161,7 @@ bool round_and_mend(ExactMesh& mesh) {
       kMendVolumeSlack * std::fabs(before)) {
     return false;
   }
-  mesh = to_surface_mesh<ExactMesh>(mended);
+  mesh = surface_mesh_or_throw<ExactMesh>(mended, "unite");
   return true;
 }
 
@@ -233,7 +239,8 @@ class Unioner {
       const auto free = static_cast<std::size_t>(
           std::find(taken.begin(), taken.end(), false) - taken.begin());
       layer[i] = static_cast<int>(free);
-      ExactMesh mesh = to_surface_mesh<ExactMesh>(parts_[i].mesh);
+      ExactMesh mesh =
+          surface_mesh_or_throw<ExactMesh>(parts_[i].mesh, "unite");
       if (free == groups.size()) {
         groups.push_back(Group{std::move(mesh), boxes[i], {i}});
       } else {
@@ -272,9 +279,10 @@ class Unioner {
   // Corefinement requires closed operands without self-intersections; a
   // part that is not is a bug of the part builder, reported by name.
   void check_part(std::size_t i) const {
-    const InexactMesh mesh = to_surface_mesh<InexactMesh>(parts_[i].mesh);
-    if (mesh.number_of_faces() == 0 || !CGAL::is_closed(mesh) ||
-        PMP::does_self_intersect(mesh)) {
+    const std::optional<InexactMesh> mesh =
+        to_surface_mesh<InexactMesh>(parts_[i].mesh);
+    if (!mesh || mesh->number_of_faces() == 0 || !CGAL::is_closed(*mesh) ||
+        PMP::does_self_intersect(*mesh)) {
       throw GeometryError("a part is not a valid closed solid: " +
                           parts_[i].label);
     }
@@ -295,7 +303,8 @@ class Unioner {
         // A tiny deterministic shift of one operand removes the coincidences
         // (shared vertices, partly shared edges) that corefinement refuses.
         const double d = kPerturbationMm * attempt;
-        translate(second, Exact::Vector_3(d, 0.618 * d, 0.382 * d));
+        translate(second,
+                  Exact::Vector_3(d * kShift[0], d * kShift[1], d * kShift[2]));
         ++stats_.retries;
       }
       ExactMesh out;
@@ -351,9 +360,10 @@ class Unioner {
   Group unite(const std::vector<std::size_t>& ids) {
     std::vector<Group> groups;
     for (const std::size_t i : ids) {
-      groups.push_back(Group{to_surface_mesh<ExactMesh>(parts_[i].mesh),
-                             box_of(bounds(parts_[i].mesh)),
-                             {i}});
+      groups.push_back(
+          Group{surface_mesh_or_throw<ExactMesh>(parts_[i].mesh, "unite"),
+                box_of(bounds(parts_[i].mesh)),
+                {i}});
     }
     return reduce(std::move(groups), false);
   }
@@ -430,23 +440,21 @@ class Unioner {
 
 }  // namespace
 
-UnionResult union_parts(std::vector<Part> parts,
-                        const std::function<void(double)>& progress,
-                        const std::function<void(double)>& expect) {
-  return Unioner(std::move(parts), progress).run(expect);
+UnionResult union_parts(std::vector<Part> parts, const UnionOptions& options) {
+  return Unioner(std::move(parts), options.progress).run(options.expect);
 }
 
 TriangleMesh subtract(const TriangleMesh& a, const TriangleMesh& b) {
-  ExactMesh first = to_surface_mesh<ExactMesh>(a);
-  ExactMesh second = to_surface_mesh<ExactMesh>(b);
-  if (first.is_empty() || second.is_empty()) {
+  std::optional<ExactMesh> first = to_surface_mesh<ExactMesh>(a);
+  std::optional<ExactMesh> second = to_surface_mesh<ExactMesh>(b);
+  if (!first || !second || first->is_empty() || second->is_empty()) {
     throw GeometryError(
         "cannot subtract volumes that are not closed 2-manifolds");
   }
   ExactMesh out;
   bool ok = false;
   try {
-    ok = PMP::corefine_and_compute_difference(first, second, out);
+    ok = PMP::corefine_and_compute_difference(*first, *second, out);
   } catch (const std::exception& e) {
     throw GeometryError(std::string("subtracting one volume from another "
                                     "failed: ") +

@@ -27,7 +27,7 @@
 
 #include "conversion.hpp"
 #include "lsolid/errors.hpp"
-#include "union_find.hpp"
+#include "shells.hpp"
 
 namespace lsolid {
 namespace {
@@ -55,8 +55,12 @@ std::vector<InexactMesh::Face_index> faces_with_area(const InexactMesh& mesh) {
 
 void add_witnesses(const Part& part, std::size_t index,
                    std::vector<Witness>& out) {
-  const InexactMesh mesh = to_surface_mesh<InexactMesh>(part.mesh);
-  if (mesh.number_of_faces() == 0) return;
+  // The union checks every part before it starts (GeometryError), so a
+  // part that is no surface has no witnesses to give.
+  const std::optional<InexactMesh> surface =
+      to_surface_mesh<InexactMesh>(part.mesh);
+  if (!surface || surface->number_of_faces() == 0) return;
+  const InexactMesh& mesh = *surface;
   const std::vector<InexactMesh::Face_index> solid_faces =
       faces_with_area(mesh);
   Tree tree(solid_faces.begin(), solid_faces.end(), mesh);
@@ -105,17 +109,8 @@ std::vector<Witness> witnesses_outside(const TriangleMesh& mesh,
                                        double min_depth_mm) {
   std::vector<Witness> outside;
   if (witnesses.empty()) return outside;
-  const InexactMesh solid = to_surface_mesh<InexactMesh>(mesh);
-  if (solid.number_of_faces() == 0) {
-    if (mesh.triangles.empty()) {
-      for (const Witness& w : witnesses) {
-        if (w.depth_mm >= min_depth_mm) outside.push_back(w);
-      }
-      return outside;
-    }
-    throw GeometryError(
-        "cannot test points against a mesh that is not a 2-manifold");
-  }
+  const InexactMesh solid =
+      surface_mesh_or_throw<InexactMesh>(mesh, "test points against");
   const std::vector<InexactMesh::Face_index> solid_faces =
       faces_with_area(solid);
   if (solid_faces.empty()) {
@@ -140,37 +135,22 @@ std::vector<Shell> unaccounted_pieces(const TriangleMesh& mesh,
                                       const std::vector<Witness>& witnesses,
                                       double min_depth_mm) {
   const std::size_t n = mesh.triangles.size();
-  UnionFind shells(n);
-  std::unordered_map<std::uint64_t, std::uint32_t> first_face;
-  for (std::uint32_t f = 0; f < n; ++f) {
-    const auto& t = mesh.triangles[f];
-    for (std::size_t k = 0; k < 3; ++k) {
-      const std::uint32_t a = t[k];
-      const std::uint32_t b = t[(k + 1) % 3];
-      const std::uint64_t key =
-          (static_cast<std::uint64_t>(std::min(a, b)) << 32U) | std::max(a, b);
-      const auto [it, inserted] = first_face.emplace(key, f);
-      if (!inserted) shells.join(f, it->second);
-    }
-  }
+  const ShellLabels shells = label_shells(mesh);
   // Each shell as a mesh of its own (a vertex of two shells, where they
   // touch at a point, is copied into each).
   constexpr std::uint32_t kNone = 0xFFFFFFFFU;
-  std::unordered_map<std::uint32_t, std::size_t> index_of_root;
-  std::vector<TriangleMesh> pieces;
+  std::vector<TriangleMesh> pieces(shells.count);
   std::vector<std::uint32_t> local(mesh.vertices.size(), kNone);
   std::vector<std::size_t> owner(mesh.vertices.size(), 0);
   for (std::uint32_t f = 0; f < n; ++f) {
-    const auto [it, inserted] =
-        index_of_root.try_emplace(shells.find(f), pieces.size());
-    if (inserted) pieces.emplace_back();
-    TriangleMesh& piece = pieces[it->second];
+    const std::uint32_t shell = shells.of_triangle[f];
+    TriangleMesh& piece = pieces[shell];
     std::array<std::uint32_t, 3> t{};
     for (std::size_t k = 0; k < 3; ++k) {
       const std::uint32_t v = mesh.triangles[f][k];
-      if (local[v] == kNone || owner[v] != it->second) {
+      if (local[v] == kNone || owner[v] != shell) {
         local[v] = static_cast<std::uint32_t>(piece.vertices.size());
-        owner[v] = it->second;
+        owner[v] = shell;
         piece.vertices.push_back(mesh.vertices[v]);
       }
       t[k] = local[v];

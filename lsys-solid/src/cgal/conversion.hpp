@@ -8,9 +8,12 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
+#include "lsolid/errors.hpp"
 #include "lsolid/mesh.hpp"
 
 namespace lsolid {
@@ -39,12 +42,13 @@ PolygonSoup<Point> polygon_soup(const TriangleMesh& m) {
   return soup;
 }
 
-/// A CGAL Surface_mesh of the triangles; empty if they do not form a
-/// 2-manifold with consistent orientation. Faces are added one by one and,
-/// if that fails (a decimated mesh lists a vertex's fan out of order, and
-/// add_face refuses to complete it), through PMP's polygon soup.
+/// A CGAL Surface_mesh of the triangles, or nothing if they do not form a
+/// 2-manifold with consistent orientation (no triangles: an empty mesh).
+/// Faces are added one by one and, if that fails (a decimated mesh lists a
+/// vertex's fan out of order, and add_face refuses to complete it), through
+/// PMP's polygon soup.
 template <typename Mesh>
-Mesh to_surface_mesh(const TriangleMesh& m) {
+std::optional<Mesh> to_surface_mesh(const TriangleMesh& m) {
   Mesh out;
   std::vector<typename Mesh::Vertex_index> vertices;
   vertices.reserve(m.vertices.size());
@@ -55,16 +59,30 @@ Mesh to_surface_mesh(const TriangleMesh& m) {
     if (out.add_face(vertices[t[0]], vertices[t[1]], vertices[t[2]]) ==
         Mesh::null_face()) {
       auto soup = polygon_soup<typename Mesh::Point>(m);
-      Mesh stitched;
-      if (CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(
+      if (!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(
               soup.polygons)) {
-        CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(
-            soup.points, soup.polygons, stitched);
+        return std::nullopt;
       }
+      Mesh stitched;
+      CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(
+          soup.points, soup.polygons, stitched);
       return stitched;
     }
   }
   return out;
+}
+
+/// to_surface_mesh for a mesh that must be a 2-manifold, as `what` (a verb:
+/// "round", "unite") needs.
+/// @throws GeometryError naming `what` when it is not.
+template <typename Mesh>
+Mesh surface_mesh_or_throw(const TriangleMesh& m, const char* what) {
+  std::optional<Mesh> out = to_surface_mesh<Mesh>(m);
+  if (!out) {
+    throw GeometryError(std::string("cannot ") + what +
+                        " a mesh that is not a 2-manifold");
+  }
+  return std::move(*out);
 }
 
 /// The triangles of a Surface_mesh, with coordinates rounded to doubles.

@@ -1,10 +1,10 @@
 // Copyright 2026 the lsolid authors
 // SPDX-License-Identifier: MIT
 //
-// The flat underside of planar models, cut from each part before the union
-// (see solid.cpp): clipping the united Sierpinski triangle, whose cut face
-// crosses thousands of tubes, did not finish in minutes, as CGAL
-// triangulates the plane's two large triangles around every crossing.
+// The flat underside of planar models printed with the round profile, cut
+// from the united model after the union (solid.cpp): cutting each part
+// before the union made that union three times as slow, as the parts'
+// coplanar caps met face on face.
 // Exact coordinates (EPECK): the new vertices lie exactly in the plane, and
 // as z_mm is a double they keep it when rounded.
 //
@@ -12,7 +12,10 @@
 // not clip()'s plane overload: that one meshes the plane as a rectangle
 // whose diagonal runs through the model's centre, at 45 degrees. Along the
 // Koch island's mitred corners, on that diagonal, it made two vertices a
-// rounding error apart, which collapsed to one when rounded to doubles.
+// rounding error apart, which collapsed to one when rounded to doubles;
+// and clipping the united Sierpinski triangle with it did not finish in
+// minutes, as CGAL triangulated the plane's two large triangles around
+// every crossing tube.
 #include "kernel.hpp"
 
 #include "lsolid/cut.hpp"
@@ -28,7 +31,6 @@
 #include <vector>
 
 #include "conversion.hpp"
-#include "lsolid/errors.hpp"
 
 namespace lsolid {
 namespace {
@@ -69,22 +71,21 @@ ExactMesh cutter_above(const TriangleMesh& mesh, double z_mm) {
 
 }  // namespace
 
-TriangleMesh cut_below(const TriangleMesh& input, double z_mm) {
+std::optional<TriangleMesh> cut_below(const TriangleMesh& input, double z_mm) {
   const auto soup = polygon_soup<ExactPoint>(input);
-  if (!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons)) {
-    throw GeometryError("cannot cut a mesh that is not a 2-manifold");
-  }
+  if (!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons)) return std::nullopt;
   ExactMesh mesh;
   PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, mesh);
   ExactMesh cutter = cutter_above(input, z_mm);
+  // CGAL's preconditions throw (lsys-solid/CMakeLists.txt); a cut they
+  // refuse is a cut that cannot be made.
   try {
-    const bool closed =
-        PMP::clip(mesh, cutter, CGAL::parameters::clip_volume(true));
-    if (!closed) throw GeometryError("CGAL could not close the cut");
+    if (!PMP::clip(mesh, cutter, CGAL::parameters::clip_volume(true))) {
+      return std::nullopt;
+    }
     PMP::triangulate_faces(mesh);
-  } catch (const std::exception& e) {
-    throw GeometryError(std::string("cutting the underside failed: ") +
-                        e.what());
+  } catch (const std::exception&) {
+    return std::nullopt;
   }
   mesh.collect_garbage();
   return to_triangle_mesh(canonical_order(mesh));

@@ -61,13 +61,13 @@ std::vector<std::array<std::uint32_t, 3>> convex_hull_triangles(
 
 std::vector<std::pair<std::uint32_t, std::uint32_t>>
 intersecting_triangle_pairs(const TriangleMesh& mesh) {
-  const InexactMesh sm = to_surface_mesh<InexactMesh>(mesh);
-  if (sm.number_of_faces() != mesh.triangles.size()) {
+  const std::optional<InexactMesh> surface = to_surface_mesh<InexactMesh>(mesh);
+  if (!surface || surface->number_of_faces() != mesh.triangles.size()) {
     throw GeometryError("stitched parts do not form an oriented surface");
   }
   std::vector<std::pair<InexactMesh::Face_index, InexactMesh::Face_index>>
       pairs;
-  PMP::self_intersections(sm, std::back_inserter(pairs));
+  PMP::self_intersections(*surface, std::back_inserter(pairs));
   // to_surface_mesh adds the faces in order, so their indices are the
   // triangles' indices.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> out;

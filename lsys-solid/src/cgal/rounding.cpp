@@ -42,9 +42,19 @@ std::size_t count_faces(const InexactMesh& mesh) {
 
 }  // namespace
 
-TriangleMesh round_and_repair(const TriangleMesh& input, bool float_coordinates,
-                              RoundingStats& stats) {
-  InexactMesh mesh = to_surface_mesh<InexactMesh>(input);
+void accumulate(RoundingStats& total, const RoundingStats& later) {
+  total.passes = later.passes;
+  total.slivers_removed += later.slivers_removed;
+  total.faces_rebuilt += later.faces_rebuilt;
+  total.repairs_refused += later.repairs_refused;
+  total.volume_change_mm3 += later.volume_change_mm3;
+}
+
+Rounded round_and_repair(const TriangleMesh& input,
+                         const RoundingOptions& options) {
+  const bool float_coordinates = options.float_coordinates;
+  RoundingStats stats;
+  InexactMesh mesh = surface_mesh_or_throw<InexactMesh>(input, "round");
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     stats.passes = pass + 1;
     if (float_coordinates) snap_to_float(mesh);
@@ -93,8 +103,8 @@ TriangleMesh round_and_repair(const TriangleMesh& input, bool float_coordinates,
   }
   if (float_coordinates) snap_to_float(mesh);  // what is checked is written
   TriangleMesh out = to_triangle_mesh(mesh);
-  stats.volume_change_mm3 += signed_volume(out) - signed_volume(input);
-  return out;
+  stats.volume_change_mm3 = signed_volume(out) - signed_volume(input);
+  return Rounded{.mesh = std::move(out), .stats = stats};
 }
 
 }  // namespace lsolid

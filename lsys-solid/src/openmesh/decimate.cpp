@@ -780,7 +780,14 @@ Decimated decimate(const TriangleMesh& input, const DecimateOptions& options) {
   double aim = options.aim;
   Decimated out;
   for (int attempt = 1;; ++attempt) {
-    out = decimate_once(input, options, aim);
+    // A mesh OpenMesh cannot take, or an exact test that CGAL refuses
+    // (its preconditions throw), leaves the mesh as it was: the build then
+    // checks and writes it undecimated.
+    try {
+      out = decimate_once(input, options, aim);
+    } catch (const std::exception& e) {
+      return Decimated{.mesh = input, .refused = e.what()};
+    }
     out.stats.attempts = attempt;
     out.stats.tolerance_mm = options.tolerance_mm;
     const double deviation = out.stats.max_deviation_mm;

@@ -26,7 +26,9 @@ void add_grammar_options(CLI::App& command, GrammarInput& input, bool with_roll,
   if (is_file_required) file->required();
   command
       .add_option("-n,--derivation-length", input.derivation_length,
-                  "derivation steps (0 to 10000), overriding the file's n")
+                  fmt::format("derivation steps (0 to {}), overriding the "
+                              "file's n",
+                              lsys::kMaxDerivationLength))
       ->type_name("N");
   command
       .add_option("--seed", input.seed,
@@ -168,12 +170,12 @@ std::uint64_t parse_whole_number(const std::string& text,
 }
 
 lsys::DerivationOptions derivation_options(const GrammarInput& input) {
-  // Limits up to 2^53 compare exactly with the size model's doubles.
-  constexpr std::uint64_t kMostLimit = std::uint64_t{1} << 53U;
+  constexpr std::uint64_t kMostLimit = lsys::kMaxWholeNumber;
   lsys::DerivationOptions options;
   if (input.derivation_length) {
-    options.derivation_length = static_cast<int>(parse_whole_number(
-        *input.derivation_length, "--derivation-length", 0, 10000));
+    options.derivation_length = static_cast<int>(
+        parse_whole_number(*input.derivation_length, "--derivation-length", 0,
+                           lsys::kMaxDerivationLength));
   }
   if (input.seed) {
     options.seed = parse_whole_number(*input.seed, "--seed", 0, kMostLimit);

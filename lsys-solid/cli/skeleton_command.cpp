@@ -98,26 +98,9 @@ void write_json(const lsys::Skeleton& skeleton, const char* units,
 
 void write_summary(const lsys::Skeleton& skeleton, const char* units,
                    Output& out) {
-  glm::dvec3 low(std::numeric_limits<double>::infinity());
-  glm::dvec3 high(-std::numeric_limits<double>::infinity());
-  const auto grow = [&](const glm::dvec3& p) {
-    low = glm::min(low, p);
-    high = glm::max(high, p);
-  };
-  for (const lsys::Segment& s : skeleton.segments) {
-    grow(s.p0);
-    grow(s.p1);
-  }
-  for (const lsys::Polygon& polygon : skeleton.polygons) {
-    for (const glm::dvec3& p : polygon.points) grow(p);
-  }
-  for (const lsys::Sphere& ball : skeleton.spheres) {
-    grow(ball.center - glm::dvec3(ball.diameter / 2.0));
-    grow(ball.center + glm::dvec3(ball.diameter / 2.0));
-  }
-  for (const lsys::Sheet& sheet : skeleton.sheets) {
-    for (const glm::dvec3& p : sheet.points) grow(p);
-  }
+  const lsys::Bounds box = lsys::bounds(skeleton);
+  const glm::dvec3& low = box.min;
+  const glm::dvec3& high = box.max;
   std::string& text = out.text();
   text += fmt::format("segments: {}\npolygons: {}\n", skeleton.segments.size(),
                       skeleton.polygons.size());

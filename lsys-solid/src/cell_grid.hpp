@@ -10,9 +10,10 @@
 namespace lsolid {
 
 /// The cells of a uniform grid of cubes `cell_mm` wide, for the spatial
-/// indexes of the decimation (SurfaceDistance, ModIntersectionGuardT). A
-/// cell's key packs its integer coordinates, 21 bits each: cells 2²¹ apart
-/// share a key, which only adds candidates that the exact tests reject.
+/// indexes of the decimation (SurfaceDistance, ModIntersectionGuardT) and
+/// of the tube mesher (a tube that comes back to itself). A cell's key
+/// packs its integer coordinates, 21 bits each: cells 2²¹ apart share a
+/// key, which only adds candidates that the exact tests reject.
 class CellGrid {
  public:
   explicit CellGrid(double cell_mm = 1.0) : cell_mm_(cell_mm) {}

@@ -52,6 +52,16 @@ struct ExtraSetting {
   std::size_t offset;  ///< byte offset of the value, for diagnostics
 };
 
+/// The most derivation steps a file or the command line may ask for: beyond
+/// it a string that grows by one module a step is still modest, but every
+/// model that grows cannot be derived anyway.
+inline constexpr int kMaxDerivationLength = 10000;
+
+/// The largest seed, and the largest limit on segments or modules: 2^53,
+/// the whole numbers a double holds exactly, so that they compare exactly
+/// with the size model's counts (which are doubles).
+inline constexpr std::uint64_t kMaxWholeNumber = std::uint64_t{1} << 53U;
+
 /// The largest colour index (the `colour` setting, `'(c)`, `;(c)`, `,(c)`).
 inline constexpr int kMaxColorIndex = 1 << 20;
 

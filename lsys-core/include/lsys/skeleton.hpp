@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <limits>
 #include <vector>
 
 namespace lsys {
@@ -77,5 +78,16 @@ struct Skeleton {
   return skeleton.segments.empty() && skeleton.polygons.empty() &&
          skeleton.spheres.empty() && skeleton.sheets.empty();
 }
+
+/// An axis-aligned box in model units; `min > max` when empty.
+struct Bounds {
+  glm::dvec3 min{std::numeric_limits<double>::infinity()};
+  glm::dvec3 max{-std::numeric_limits<double>::infinity()};
+};
+
+/// The box of what the skeleton draws: segments' ends, polygons' and
+/// sheets' points, and balls whole (tube widths are not counted). Empty
+/// when it draws nothing.
+[[nodiscard]] Bounds bounds(const Skeleton& skeleton);
 
 }  // namespace lsys

@@ -1257,7 +1257,8 @@ class GrammarBuilder : TextScan {
           draft_.axiom = v;
           break;
         case Key::DerivationLength:
-          s.derivation_length = static_cast<int>(whole(v, 10000));
+          s.derivation_length =
+              static_cast<int>(whole(v, kMaxDerivationLength));
           s.derivation_length_offset = setting.key_range.begin;
           break;
         case Key::Angle:
@@ -1303,7 +1304,8 @@ class GrammarBuilder : TextScan {
           s.elasticity = number(v);
           break;
         case Key::Seed:
-          s.seed = static_cast<std::uint64_t>(whole(v, 9007199254740992.0));
+          s.seed = static_cast<std::uint64_t>(
+              whole(v, static_cast<double>(kMaxWholeNumber)));
           s.seed_offset = v.begin;
           break;
         case Key::Roll: {

@@ -193,12 +193,14 @@ class LparserReader : TextScan {
 
   void set_depth(Settings& s, Range word) const {
     const double depth = number(word, "the recursion depth");
-    if (depth < 0 || depth > 10000 || depth != std::floor(depth)) {
+    if (depth < 0 || depth > kMaxDerivationLength ||
+        depth != std::floor(depth)) {
       fail(word.begin,
            depth != std::floor(depth)
                ? "a fractional recursion depth (Lparser's growing mode) is "
                  "not supported: give a whole number"
-               : "expected a whole number from 0 to 10000");
+               : "expected a whole number from 0 to " +
+                     std::to_string(kMaxDerivationLength));
     }
     s.derivation_length = static_cast<int>(depth);
     s.derivation_length_offset = word.begin;

@@ -9,7 +9,10 @@
 
 namespace lsolid {
 
-/// Footprint points lie on a grid of this many cells a millimetre (2^20).
+/// Points united in a plane (a footprint, coplanar leaves) lie on a grid
+/// of this many cells a millimetre (2^20): about a nanometre, far below
+/// print resolution, and far above the rounding errors of turtle paths
+/// that meet again.
 inline constexpr double kFootprintCellsPerMm = 1048576.0;
 
 /// The region of the plane that a model lying flat covers, seen from above:

@@ -27,6 +27,8 @@
 #include <map>
 #include <utility>
 
+#include "lsolid/footprint.hpp"
+
 namespace lsolid {
 namespace {
 
@@ -55,8 +57,7 @@ bool is_in(const Cdt& cdt, Face f) {
 // that rounding back to doubles folded into a plate that cut itself. On
 // the grid they are one polygon.
 double on_grid(double x) {
-  constexpr double kCells = 1048576.0;  // 2^20 a millimetre
-  return std::round(x * kCells) / kCells;
+  return std::round(x * kFootprintCellsPerMm) / kFootprintCellsPerMm;
 }
 
 // The polygon as given, without repeated points; empty if it is not simple.

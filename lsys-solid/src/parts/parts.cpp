@@ -33,25 +33,7 @@ constexpr double kPlateMargin = 1.05;
 
 // The largest side of the skeleton's box, at least 1 mm.
 double size_of(const lsys::Skeleton& skeleton) {
-  Box box;
-  const auto add = [&](const glm::dvec3& p) {
-    box.min = glm::min(box.min, p);
-    box.max = glm::max(box.max, p);
-  };
-  for (const lsys::Segment& s : skeleton.segments) {
-    add(s.p0);
-    add(s.p1);
-  }
-  for (const lsys::Polygon& polygon : skeleton.polygons) {
-    for (const glm::dvec3& p : polygon.points) add(p);
-  }
-  for (const lsys::Sphere& s : skeleton.spheres) {
-    add(s.center - glm::dvec3(s.diameter / 2.0));
-    add(s.center + glm::dvec3(s.diameter / 2.0));
-  }
-  for (const lsys::Sheet& sheet : skeleton.sheets) {
-    for (const glm::dvec3& p : sheet.points) add(p);
-  }
+  const lsys::Bounds box = lsys::bounds(skeleton);
   const glm::dvec3 extent = box.max - box.min;
   return std::max({1.0, extent.x, extent.y, extent.z});
 }

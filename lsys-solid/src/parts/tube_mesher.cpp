@@ -20,6 +20,7 @@
 #include <cmath>
 #include <string>
 
+#include "cell_grid.hpp"
 #include "cgal/part_queries.hpp"
 #include "golden.hpp"
 #include "union_find.hpp"
@@ -65,7 +66,7 @@ class RunGrid {
     }
     // Segments closer than the clearance have midpoints in adjacent cells
     // (corners stand out by at most 1 / cos(π/6) of the radius).
-    cell_ = std::max(longest + kClearance * 1.16 * widest, 1e-9);
+    grid_ = CellGrid(std::max(longest + kClearance * 1.16 * widest, 1e-9));
   }
   void start(std::int32_t first) {
     cells_.clear();
@@ -75,7 +76,9 @@ class RunGrid {
     add(first);
   }
   void add(std::int32_t i) {
-    if (last_ >= 0) cells_[key(centre(last_))].push_back(last_);
+    if (last_ >= 0) {
+      cells_[CellGrid::key(grid_.cell_of(centre(last_)))].push_back(last_);
+    }
     last_ = i;  // the newest stays out: it touches the next one
     path_start_[i] = path_length_;
     path_length_ += length_of(i);
@@ -87,11 +90,8 @@ class RunGrid {
     for (int dx = -1; dx <= 1; ++dx) {
       for (int dy = -1; dy <= 1; ++dy) {
         for (int dz = -1; dz <= 1; ++dz) {
-          auto k = key(c);
-          k[0] += dx;
-          k[1] += dy;
-          k[2] += dz;
-          const auto it = cells_.find(k);
+          const auto it = cells_.find(
+              CellGrid::key(grid_.cell_of(c) + glm::ivec3(dx, dy, dz)));
           if (it == cells_.end()) continue;
           for (const std::int32_t j : it->second) {
             const double reach = radius(i) + radius(j);
@@ -109,13 +109,6 @@ class RunGrid {
   }
 
  private:
-  using Key = std::array<std::int64_t, 3>;
-  struct KeyHash {
-    std::size_t operator()(const Key& k) const noexcept {
-      return static_cast<std::size_t>(k[0] * 73856093LL ^ k[1] * 19349663LL ^
-                                      k[2] * 83492791LL);
-    }
-  };
   glm::dvec3 centre(std::int32_t i) const {
     const lsys::Segment& s = segments_[static_cast<std::size_t>(i)];
     return (s.p0 + s.p1) / 2.0;
@@ -128,11 +121,6 @@ class RunGrid {
     const lsys::Segment& s = segments_[static_cast<std::size_t>(i)];
     return tube_corner_radius(std::max(s.start_diameter, s.end_diameter) / 2.0,
                               tolerance_mm_);
-  }
-  Key key(const glm::dvec3& p) const {
-    return {static_cast<std::int64_t>(std::floor(p.x / cell_)),
-            static_cast<std::int64_t>(std::floor(p.y / cell_)),
-            static_cast<std::int64_t>(std::floor(p.z / cell_))};
   }
   // The distance between two segments (Lumelsky's closest points).
   double distance(std::int32_t i, std::int32_t j) const {
@@ -163,8 +151,8 @@ class RunGrid {
 
   const std::vector<lsys::Segment>& segments_;
   double tolerance_mm_;
-  double cell_ = 0.0;
-  std::unordered_map<Key, std::vector<std::int32_t>, KeyHash> cells_;
+  CellGrid grid_;
+  std::unordered_map<std::uint64_t, std::vector<std::int32_t>> cells_;
   std::unordered_map<std::int32_t, double> path_start_;  // along the run
   double path_length_ = 0.0;
   std::int32_t last_ = -1;

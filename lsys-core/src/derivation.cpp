@@ -21,11 +21,6 @@
 
 namespace lsys {
 
-std::optional<SizePrediction> predict_size(const Grammar& grammar,
-                                           int derivation_length) {
-  return exact_size(grammar, derivation_length);
-}
-
 class Derivation::Impl {
  public:
   Impl(const Grammar& grammar, const DerivationOptions& options)

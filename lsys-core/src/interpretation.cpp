@@ -1393,13 +1393,4 @@ void answer_queries(const Grammar& grammar, ModuleString& modules,
   interpreter.answer_queries(modules);
 }
 
-Skeleton interpret_string(const Grammar& grammar, const ModuleString& modules,
-                          const InterpretOptions& options) {
-  Interpreter interpreter(grammar, options);
-  Variables variables = initial_variables(grammar);
-  interpreter.use_variables(&variables);
-  interpreter.run(modules);
-  return interpreter.finish();
-}
-
 }  // namespace lsys

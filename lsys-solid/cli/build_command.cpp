@@ -160,86 +160,94 @@ void print_report(const SolidReport& r, bool united) {
   }
 }
 
-// The report as one JSON object, for scripts (--json).
-std::string json_report(const Solid& solid, const OverhangReport& over,
-                        const std::optional<glm::dvec3>& bed, bool fits,
-                        const std::filesystem::path& output, bool written,
-                        bool united, bool colored,
-                        const std::vector<Rgb>& palette) {
+// The report as one JSON object, for scripts (--json); docs/cli.md lists
+// its members in this order.
+Json json_report(const Solid& solid, const OverhangReport& over,
+                 const std::optional<glm::dvec3>& bed, bool fits,
+                 const std::filesystem::path& output, bool written, bool united,
+                 bool colored, const std::vector<Rgb>& palette) {
   const SolidReport& r = solid.report;
   const ValidationReport& v = r.validation;
   const Placement& p = r.placement;
-  std::vector<std::string> colors;
-  for (const auto& [color, count] : color_counts(solid)) {
-    colors.push_back(
-        fmt::format("{{\"color\": {}, \"rgb\": \"{}\", \"triangles\": {}}}",
-                    color, hex(palette_color(color, palette)), count));
+  Json colors = nullptr;
+  if (colored) {
+    colors = Json::array();
+    for (const auto& [color, count] : color_counts(solid)) {
+      colors.push_back({{"color", color},
+                        {"rgb", hex(palette_color(color, palette))},
+                        {"triangles", count}});
+    }
   }
-  std::string warnings;
-  for (const std::string& w : r.warnings) {
-    if (!warnings.empty()) warnings += ", ";
-    append_json_string(warnings, w);
-  }
-  std::vector<std::string> volumes;
+  Json volumes = nullptr;
   for (const ColoredMesh& m : solid.volumes) {
-    volumes.push_back(
-        fmt::format("{{\"color\": {}, \"triangles\": {}, \"volume_mm3\": {}}}",
-                    m.colors.empty() ? 0 : m.colors.front(),
-                    m.mesh.triangles.size(), signed_volume(m.mesh)));
+    volumes.push_back({{"color", m.colors.empty() ? 0 : m.colors.front()},
+                       {"triangles", m.mesh.triangles.size()},
+                       {"volume_mm3", signed_volume(m.mesh)}});
   }
-  return fmt::format(
-      "{{\"output\": {}, \"written\": {}, \"united\": {}, \"segments\": {}, "
-      "\"repeated_segments\": {}, "
-      "\"leaves\": {}, \"tubes\": {}, \"junction_hulls\": {}, \"joints\": {}, "
-      "\"leaf_plates\": {}, \"spheres\": {}, \"surface_plates\": {}, "
-      "\"contacts\": {}, "
-      "\"booleans\": {}, "
-      "\"mm_per_unit\": {}, "
-      "\"base\": {}, \"lies_flat\": {}, \"profile\": {}, "
-      "\"underside_cut_mm\": {}, "
-      "\"decimation\": {}, \"colors\": {}, \"volumes\": {}, "
-      "\"triangles\": {}, "
-      "\"volume_mm3\": {}, "
-      "\"bounds\": {{\"min\": {}, \"max\": {}}}, \"printable\": {}, "
-      "\"shells\": {}, {}, \"genus\": {}, \"overhang_mm2\": {}, "
-      "\"needs_supports\": {}, \"fits_bed\": {}, \"warnings\": [{}], "
-      "\"seconds\": {{\"skeleton\": {}, \"parts\": {}, \"union\": {}, "
-      "\"rounding\": {}, \"decimation\": {}, \"check\": {}, "
-      "\"volumes\": {}}}}}\n",
-      json_string(output.string()), written, united, r.segments,
-      r.repeated_segments, r.polygons, r.tubes, r.junctions, r.joints, r.plates,
-      r.spheres, r.sheets, r.union_stats.contacts, r.union_stats.booleans,
-      r.mm_per_unit,
-      p.has_base ? fmt::format("{{\"radius_mm\": {}, \"thickness_mm\": {}}}",
-                               p.base_radius_mm, p.base_thickness_mm)
-                 : std::string("null"),
-      p.lies_flat,
-      p.lies_flat ? (r.flat_outlines > 0 ? "\"flat\"" : "\"round\"") : "null",
-      p.cut_depth_mm,
-      r.decimated
-          ? fmt::format(
-                "{{\"triangles_before\": {}, \"triangles_after\": {}, "
-                "\"refused_intersections\": {}, \"max_deviation_mm\": {}, "
-                "\"tolerance_mm\": {}, \"within_tolerance\": {}, "
-                "\"runs\": {}, \"short_edges_left\": {}, "
-                "\"reached_max_triangles\": {}}}",
-                r.decimation.triangles_before, r.decimation.triangles_after,
-                r.decimation.refused_intersections,
-                r.decimation.max_deviation_mm, r.decimation.tolerance_mm,
-                r.decimation.within_tolerance, r.decimation.attempts,
-                r.decimation.short_edges_left,
-                r.decimation.reached_max_triangles)
-          : std::string("null"),
-      colored ? fmt::format("[{}]", fmt::join(colors, ", "))
-              : std::string("null"),
-      volumes.empty() ? std::string("null")
-                      : fmt::format("[{}]", fmt::join(volumes, ", ")),
-      v.triangles, v.volume_mm3, json_point(v.bounds.min),
-      json_point(v.bounds.max), v.is_printable(), v.shells, json_pieces(v),
-      v.genus, over.area_mm2, over.needs_supports,
-      bed ? (fits ? "true" : "false") : "null", warnings, r.seconds.skeleton,
-      r.seconds.parts, r.seconds.unite, r.seconds.round, r.seconds.decimate,
-      r.seconds.check, r.seconds.volumes);
+  Json decimation = nullptr;
+  if (r.decimated) {
+    const DecimateStats& d = r.decimation;
+    decimation = {{"triangles_before", d.triangles_before},
+                  {"triangles_after", d.triangles_after},
+                  {"refused_intersections", d.refused_intersections},
+                  {"max_deviation_mm", d.max_deviation_mm},
+                  {"tolerance_mm", d.tolerance_mm},
+                  {"within_tolerance", d.within_tolerance},
+                  {"runs", d.attempts},
+                  {"short_edges_left", d.short_edges_left},
+                  {"reached_max_triangles", d.reached_max_triangles}};
+  }
+  Json base = nullptr;
+  if (p.has_base) {
+    base = {{"radius_mm", p.base_radius_mm},
+            {"thickness_mm", p.base_thickness_mm}};
+  }
+  Json profile = nullptr;
+  if (p.lies_flat) profile = r.flat_outlines > 0 ? "flat" : "round";
+  return Json{
+      {"output", output.string()},
+      {"written", written},
+      {"united", united},
+      {"segments", r.segments},
+      {"repeated_segments", r.repeated_segments},
+      {"leaves", r.polygons},
+      {"tubes", r.tubes},
+      {"junction_hulls", r.junctions},
+      {"joints", r.joints},
+      {"leaf_plates", r.plates},
+      {"spheres", r.spheres},
+      {"surface_plates", r.sheets},
+      {"contacts", r.union_stats.contacts},
+      {"booleans", r.union_stats.booleans},
+      {"mm_per_unit", r.mm_per_unit},
+      {"base", std::move(base)},
+      {"lies_flat", p.lies_flat},
+      {"profile", std::move(profile)},
+      {"underside_cut_mm", p.cut_depth_mm},
+      {"decimation", std::move(decimation)},
+      {"colors", std::move(colors)},
+      {"volumes", std::move(volumes)},
+      {"triangles", v.triangles},
+      {"volume_mm3", v.volume_mm3},
+      {"bounds",
+       {{"min", json_point(v.bounds.min)}, {"max", json_point(v.bounds.max)}}},
+      {"printable", v.is_printable()},
+      {"shells", v.shells},
+      {"pieces", v.pieces()},
+      {"loose_pieces", json_loose_pieces(v)},
+      {"genus", v.genus},
+      {"overhang_mm2", over.area_mm2},
+      {"needs_supports", over.needs_supports},
+      {"fits_bed", bed ? Json(fits) : Json(nullptr)},
+      {"warnings", r.warnings},
+      {"seconds",
+       {{"skeleton", r.seconds.skeleton},
+        {"parts", r.seconds.parts},
+        {"union", r.seconds.unite},
+        {"rounding", r.seconds.round},
+        {"decimation", r.seconds.decimate},
+        {"check", r.seconds.check},
+        {"volumes", r.seconds.volumes}}}};
 }
 
 }  // namespace
@@ -433,9 +441,9 @@ void run_build(const BuildCommand& command) {
   }
   const auto finish = [&](bool written) {
     if (command.json) {
-      fmt::print("{}",
-                 json_report(solid, over, bed, fits, output, written,
-                             options.unite, colored, options.print.colors));
+      fmt::print("{}", json_line(json_report(solid, over, bed, fits, output,
+                                             written, options.unite, colored,
+                                             options.print.colors)));
     }
     // The report goes out before any error on standard error; a report
     // that cannot be written is an error of its own.

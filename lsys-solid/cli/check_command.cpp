@@ -19,36 +19,31 @@
 namespace lsolid::cli {
 namespace {
 
-std::string json_number(double v) { return fmt::format("{}", v); }
-
-std::string json_report(const ValidationReport& r) {
-  std::string problems;
-  for (const std::string& p : r.problems()) {
-    if (!problems.empty()) problems += ", ";
-    append_json_string(problems, p);
-  }
-  const auto optional = [](bool known, const std::string& value) {
-    return known ? value : std::string("null");
+Json json_report(const ValidationReport& r) {
+  const auto known = [](bool is_known, auto value) {
+    return is_known ? Json(value) : Json(nullptr);
   };
-  return fmt::format(
-      "{{\"printable\": {}, \"triangles\": {}, \"vertices\": {}, \"closed\": "
-      "{}, "
-      "\"boundary_edges\": {}, \"non_manifold_edges\": {}, "
-      "\"non_manifold_vertices\": {}, \"misoriented_edges\": {}, "
-      "\"outward\": {}, \"degenerate_faces\": {}, \"self_intersecting_pairs\": "
-      "{}, "
-      "\"shells\": {}, {}, \"genus\": {}, \"volume_mm3\": {}, "
-      "\"bounds\": {{\"min\": {}, \"max\": {}}}, \"problems\": [{}]}}\n",
-      r.is_printable(), r.triangles, r.vertices, r.boundary_edges == 0,
-      r.boundary_edges, r.non_manifold_edges, r.non_manifold_vertices,
-      r.misoriented_edges,
-      optional(r.orientation_checked, r.is_outward ? "true" : "false"),
-      r.degenerate_faces,
-      optional(r.self_intersections_checked,
-               std::to_string(r.self_intersecting_pairs)),
-      r.shells, json_pieces(r), optional(r.genus >= 0, std::to_string(r.genus)),
-      json_number(r.volume_mm3), json_point(r.bounds.min),
-      json_point(r.bounds.max), problems);
+  return Json{
+      {"printable", r.is_printable()},
+      {"triangles", r.triangles},
+      {"vertices", r.vertices},
+      {"closed", r.boundary_edges == 0},
+      {"boundary_edges", r.boundary_edges},
+      {"non_manifold_edges", r.non_manifold_edges},
+      {"non_manifold_vertices", r.non_manifold_vertices},
+      {"misoriented_edges", r.misoriented_edges},
+      {"outward", known(r.orientation_checked, r.is_outward)},
+      {"degenerate_faces", r.degenerate_faces},
+      {"self_intersecting_pairs",
+       known(r.self_intersections_checked, r.self_intersecting_pairs)},
+      {"shells", r.shells},
+      {"pieces", r.pieces()},
+      {"loose_pieces", json_loose_pieces(r)},
+      {"genus", known(r.genus >= 0, r.genus)},
+      {"volume_mm3", r.volume_mm3},
+      {"bounds",
+       {{"min", json_point(r.bounds.min)}, {"max", json_point(r.bounds.max)}}},
+      {"problems", r.problems()}};
 }
 
 // `in_pieces`: --one-piece was asked for and the mesh is not one piece.
@@ -127,19 +122,17 @@ bool check_volumes(const CheckCommand& command,
     return volumes[i].colors.empty() ? 0 : volumes[i].colors.front();
   };
   if (command.json) {
-    std::string items;
+    Json items = Json::array();
     for (std::size_t i = 0; i < reports.size(); ++i) {
-      std::string one = json_report(reports[i]);
-      one.pop_back();  // the newline
-      one.pop_back();  // the closing brace
-      items += fmt::format("{}{}, \"color\": {}}}", i > 0 ? ", " : "", one,
-                           color(i));
+      Json one = json_report(reports[i]);
+      one["color"] = color(i);
+      items.push_back(std::move(one));
     }
-    fmt::print(
-        "{{\"printable\": {}, \"volumes\": [{}], \"overlap_mm\": "
-        "{}}}\n",
-        printable, items,
-        overlap_mm ? json_number(*overlap_mm) : std::string("null"));
+    fmt::print("{}",
+               json_line(Json{{"printable", printable},
+                              {"volumes", std::move(items)},
+                              {"overlap_mm", overlap_mm ? Json(*overlap_mm)
+                                                        : Json(nullptr)}}));
   } else {
     fmt::print("{}: {} volumes\n", command.file, volumes.size());
     for (std::size_t i = 0; i < reports.size(); ++i) {
@@ -181,7 +174,7 @@ bool run_check(const CheckCommand& command) {
       validate(volumes.empty() ? TriangleMesh() : volumes.front().mesh);
   const bool in_pieces = command.one_piece && report.pieces() > 1;
   const std::string text = command.json
-                               ? json_report(report)
+                               ? json_line(json_report(report))
                                : text_report(command.file, report, in_pieces);
   std::fputs(text.c_str(), stdout);
   return report.is_printable() && !in_pieces;

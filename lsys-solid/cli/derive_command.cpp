@@ -245,14 +245,11 @@ void run_derive(const DeriveCommand& command) {
     if (counts[s] > 0) named.emplace_back(grammar.alphabet.name(s), counts[s]);
   }
   std::sort(named.begin(), named.end());
-  std::string& text = out.text();
-  text += "{\"length\": " + std::to_string(length) + ", \"modules\": {";
-  for (std::size_t i = 0; i < named.size(); ++i) {
-    if (i > 0) text += ", ";
-    append_json_string(text, named[i].first);
-    text += ": " + std::to_string(named[i].second);
-  }
-  text += "}, \"max_depth\": " + std::to_string(max_depth) + "}\n";
+  Json modules = Json::object();
+  for (const auto& [name, count] : named) modules[name] = count;
+  out.text() += json_line(Json{{"length", length},
+                               {"modules", std::move(modules)},
+                               {"max_depth", max_depth}});
   out.flush();
 }
 

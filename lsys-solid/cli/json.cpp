@@ -2,36 +2,13 @@
 // SPDX-License-Identifier: MIT
 #include "json.hpp"
 
-#include <fmt/format.h>
-
 namespace lsolid::cli {
 
-void append_json_string(std::string& out, const std::string& text) {
-  out += '"';
-  for (const char c : text) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20U) {
-      static constexpr char kHex[] = "0123456789abcdef";
-      out += "\\u00";
-      out += kHex[(c >> 4) & 0xF];
-      out += kHex[c & 0xF];
-    } else {
-      out += c;
-    }
-  }
-  out += '"';
-}
+Json json_point(const glm::dvec3& p) { return Json::array({p.x, p.y, p.z}); }
 
-std::string json_string(const std::string& text) {
-  std::string out;
-  append_json_string(out, text);
-  return out;
-}
-
-std::string json_point(const glm::dvec3& p) {
-  return fmt::format("[{}, {}, {}]", p.x, p.y, p.z);
+std::string json_line(const Json& value) {
+  // Linux file names may hold any bytes; strict UTF-8 would throw on them.
+  return value.dump(-1, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace lsolid::cli

@@ -3,18 +3,20 @@
 #pragma once
 
 #include <glm/vec3.hpp>
+#include <nlohmann/json.hpp>
 #include <string>
 
 namespace lsolid::cli {
 
-/// Appends `text` as a JSON string: quoted, with quotes, backslashes and
-/// control characters escaped.
-void append_json_string(std::string& out, const std::string& text);
+/// A JSON value whose objects keep their keys in the order they were set,
+/// as docs/cli.md lists them (nlohmann-json).
+using Json = nlohmann::ordered_json;
 
-/// `text` as a JSON string (see append_json_string).
-[[nodiscard]] std::string json_string(const std::string& text);
+/// A point as `[x, y, z]`.
+[[nodiscard]] Json json_point(const glm::dvec3& p);
 
-/// `[x, y, z]`, numbers in shortest round-trip form.
-[[nodiscard]] std::string json_point(const glm::dvec3& p);
+/// The value on one line, ended by a newline: the form every `--json`
+/// prints. Bytes of a file name that are not UTF-8 become U+FFFD.
+[[nodiscard]] std::string json_line(const Json& value);
 
 }  // namespace lsolid::cli

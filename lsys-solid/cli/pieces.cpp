@@ -47,16 +47,15 @@ std::string describe_pieces(const ValidationReport& report) {
           : std::string());
 }
 
-std::string json_pieces(const ValidationReport& report) {
-  std::vector<std::string> items;
+Json json_loose_pieces(const ValidationReport& report) {
+  Json items = Json::array();
   const std::vector<Shell> rest = loose(report);
   for (std::size_t i = 0; i < std::min(rest.size(), kShownInJson); ++i) {
-    items.push_back(fmt::format(
-        "{{\"volume_mm3\": {}, \"min\": {}, \"max\": {}}}", rest[i].volume_mm3,
-        json_point(rest[i].bounds.min), json_point(rest[i].bounds.max)));
+    items.push_back({{"volume_mm3", rest[i].volume_mm3},
+                     {"min", json_point(rest[i].bounds.min)},
+                     {"max", json_point(rest[i].bounds.max)}});
   }
-  return fmt::format("\"pieces\": {}, \"loose_pieces\": [{}]", report.pieces(),
-                     fmt::join(items, ", "));
+  return items;
 }
 
 }  // namespace lsolid::cli

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "json.hpp"
 #include "lsolid/validate.hpp"
 
 namespace lsolid::cli {
@@ -12,8 +13,8 @@ namespace lsolid::cli {
 /// loose ones and where they are; empty for a model in one piece.
 [[nodiscard]] std::string describe_pieces(const ValidationReport& report);
 
-/// The JSON members `"pieces": N, "loose_pieces": [...]` (the ten largest
-/// loose pieces, each with `volume_mm3`, `min` and `max`).
-[[nodiscard]] std::string json_pieces(const ValidationReport& report);
+/// The ten largest loose pieces (all but the largest piece), each as
+/// `{"volume_mm3", "min", "max"}`: the report's `loose_pieces`.
+[[nodiscard]] Json json_loose_pieces(const ValidationReport& report);
 
 }  // namespace lsolid::cli

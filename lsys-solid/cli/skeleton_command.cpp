@@ -25,6 +25,10 @@ void append_point(std::string& out, const glm::dvec3& p) {
   out += ']';
 }
 
+// Written piece by piece rather than built as one nlohmann-json value, as
+// the reports are: a skeleton may hold twenty million segments, which
+// stream out in bounded memory here (Output flushes as it grows), where a
+// document of them would take gigabytes.
 void write_json(const lsys::Skeleton& skeleton, const char* units,
                 Output& out) {
   std::string& text = out.text();

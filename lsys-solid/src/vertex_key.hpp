@@ -4,6 +4,7 @@
 
 #include <array>
 #include <bit>
+#include <boost/container_hash/hash.hpp>
 #include <cstdint>
 #include <functional>
 #include <glm/vec3.hpp>
@@ -35,13 +36,8 @@ inline glm::dvec3 key_point(const FloatKey& k) {
           std::bit_cast<float>(k[2])};
 }
 
-struct FloatKeyHash {
-  std::size_t operator()(const FloatKey& k) const noexcept {
-    std::uint64_t h = k[0];
-    h = h * 0x9E3779B97F4A7C15ULL ^ k[1];
-    h = h * 0x9E3779B97F4A7C15ULL ^ k[2];
-    return static_cast<std::size_t>(h ^ (h >> 29U));
-  }
-};
+/// A hash of float keys for unordered containers (Boost's hash_combine
+/// over the three coordinates).
+using FloatKeyHash = boost::hash<FloatKey>;
 
 }  // namespace lsolid

@@ -9,6 +9,7 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -24,6 +25,7 @@ namespace {
 using testing::lsolid;
 using testing::read_text;
 using testing::run_command;
+using Json = nlohmann::ordered_json;
 
 const std::filesystem::path kSource = LSOLID_SOURCE_DIR;
 const std::filesystem::path kDiagnostics = kSource / "tests/data/diagnostics";
@@ -49,11 +51,11 @@ TEST(Cli, DeriveStatsPrintsLengthCountsAndDepth) {
                              kSource / "printables");
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out,
-            "{\"length\": 77399, \"modules\": {\"!\": 3279, \"&\": 3279, "
-            "\"'\": 6038, \"+\": 5136, \"-\": 3852, \"/\": 22596, \"A\": 2187, "
-            "\"F\": 3891, \"L\": 2607, \"S\": 1284, \"[\": 4563, \"]\": 4563, "
-            "\"^\": 2568, \"f\": 7704, \"{\": 1284, \"|\": 1284, \"}\": 1284}, "
-            "\"max_depth\": 7}\n");
+            "{\"length\":77399,\"modules\":{\"!\":3279,\"&\":3279,"
+            "\"'\":6038,\"+\":5136,\"-\":3852,\"/\":22596,\"A\":2187,"
+            "\"F\":3891,\"L\":2607,\"S\":1284,\"[\":4563,\"]\":4563,"
+            "\"^\":2568,\"f\":7704,\"{\":1284,\"|\":1284,\"}\":1284},"
+            "\"max_depth\":7}\n");
 }
 
 TEST(Cli, DefinesAndSeedsComeFromTheCommandLine) {
@@ -330,7 +332,7 @@ TEST_F(Build, ChoosesTheProfileOfAFlatModelAndRefusesAnUnknownOne) {
             "'square'\nsquare\n^\n");
   const auto flat = run_command(lsolid() + " b.ls --json -o f.stl", dir_);
   EXPECT_EQ(flat.exit_code, 0) << flat.err;
-  EXPECT_NE(flat.out.find("\"profile\": \"flat\""), std::string::npos);
+  EXPECT_EQ(Json::parse(flat.out)["profile"], "flat") << flat.out;
   const auto round =
       run_command(lsolid() + " b.ls --profile round -o r.stl", dir_);
   EXPECT_EQ(round.exit_code, 0) << round.err;
@@ -340,7 +342,7 @@ TEST_F(Build, ChoosesTheProfileOfAFlatModelAndRefusesAnUnknownOne) {
   { std::ofstream(dir_ / "c.ls") << "profile: round\n\u03C9: F+F+F\n"; }
   const auto file = run_command(lsolid() + " c.ls --json -o c.stl", dir_);
   EXPECT_EQ(file.exit_code, 0) << file.err;
-  EXPECT_NE(file.out.find("\"profile\": \"round\""), std::string::npos);
+  EXPECT_EQ(Json::parse(file.out)["profile"], "round") << file.out;
 }
 
 TEST_F(Build, RefusesAModelThatDoesNotFitTheBedUnlessForced) {
@@ -393,10 +395,10 @@ TEST_F(Build, SaysPlainlyWhenTheModelFallsApartAndCanRefuseIt) {
   const auto json =
       run_command(lsolid() + " check apart.stl --json --one-piece", dir_);
   EXPECT_EQ(json.exit_code, 1);
-  EXPECT_NE(
-      json.out.find("\"pieces\": 2, \"loose_pieces\": [{\"volume_mm3\": "),
-      std::string::npos)
-      << json.out;
+  const Json pieces = Json::parse(json.out);
+  EXPECT_EQ(pieces["pieces"], 2) << json.out;
+  ASSERT_EQ(pieces["loose_pieces"].size(), 1U) << json.out;
+  EXPECT_GT(pieces["loose_pieces"][0]["volume_mm3"].get<double>(), 0.0);
   // Refused at build time: exit 3, nothing written over what was there.
   const auto refused =
       run_command(lsolid() + " apart.ls --one-piece -o again.stl", dir_);
@@ -490,25 +492,68 @@ TEST_F(Build, IsQuietOrSpeaksJsonWhenAsked) {
   EXPECT_TRUE(std::filesystem::exists(dir_ / "h.stl"));
   const auto json = run_command(lsolid() + " h.ls --json -o j.stl", dir_);
   EXPECT_EQ(json.exit_code, 0);
-  const std::string head =
-      "{\"output\": \"j.stl\", \"written\": true, \"united\": true, ";
-  EXPECT_EQ(json.out.substr(0, head.size()), head);
-  EXPECT_NE(json.out.find("\"segments\": 63, \"repeated_segments\": 0, "
-                          "\"leaves\": 0, \"tubes\": 1,"),
-            std::string::npos)
-      << json.out;
-  EXPECT_NE(json.out.find("\"printable\": true, \"shells\": 1, \"pieces\": 1, "
-                          "\"loose_pieces\": [], \"genus\": 0,"),
-            std::string::npos);
-  EXPECT_NE(json.out.find("\"base\": null,"), std::string::npos);
-  EXPECT_NE(json.out.find("\"fits_bed\": null,"), std::string::npos);
+  const Json report = Json::parse(json.out);
+  // The members in the order docs/cli.md lists them.
+  std::vector<std::string> keys;
+  for (const auto& [key, value] : report.items()) keys.push_back(key);
+  const std::vector<std::string> documented{"output",
+                                            "written",
+                                            "united",
+                                            "segments",
+                                            "repeated_segments",
+                                            "leaves",
+                                            "tubes",
+                                            "junction_hulls",
+                                            "joints",
+                                            "leaf_plates",
+                                            "spheres",
+                                            "surface_plates",
+                                            "contacts",
+                                            "booleans",
+                                            "mm_per_unit",
+                                            "base",
+                                            "lies_flat",
+                                            "profile",
+                                            "underside_cut_mm",
+                                            "decimation",
+                                            "colors",
+                                            "volumes",
+                                            "triangles",
+                                            "volume_mm3",
+                                            "bounds",
+                                            "printable",
+                                            "shells",
+                                            "pieces",
+                                            "loose_pieces",
+                                            "genus",
+                                            "overhang_mm2",
+                                            "needs_supports",
+                                            "fits_bed",
+                                            "warnings",
+                                            "seconds"};
+  EXPECT_EQ(keys, documented);
+  EXPECT_EQ(report["output"], "j.stl");
+  EXPECT_EQ(report["written"], true);
+  EXPECT_EQ(report["united"], true);
+  EXPECT_EQ(report["segments"], 63);
+  EXPECT_EQ(report["repeated_segments"], 0);
+  EXPECT_EQ(report["leaves"], 0);
+  EXPECT_EQ(report["tubes"], 1);
+  EXPECT_EQ(report["printable"], true);
+  EXPECT_EQ(report["shells"], 1);
+  EXPECT_EQ(report["pieces"], 1);
+  EXPECT_EQ(report["loose_pieces"], Json::array());
+  EXPECT_EQ(report["genus"], 0);
+  EXPECT_TRUE(report["base"].is_null());
+  EXPECT_TRUE(report["fits_bed"].is_null());
   EXPECT_EQ(json.out.back(), '\n');
   // Names are JSON strings: quotes and backslashes escaped.
   const auto quoted =
       run_command(lsolid() + " h.ls --json -o 'q\"u\\o.stl'", dir_);
   EXPECT_EQ(quoted.exit_code, 0);
-  const std::string quoted_head = "{\"output\": \"q\\\"u\\\\o.stl\", ";
+  const std::string quoted_head = "{\"output\":\"q\\\"u\\\\o.stl\",";
   EXPECT_EQ(quoted.out.substr(0, quoted_head.size()), quoted_head);
+  EXPECT_EQ(Json::parse(quoted.out)["output"], "q\"u\\o.stl");
   EXPECT_EQ(std::count(json.out.begin(), json.out.end(), '\n'), 1);
 }
 
@@ -733,15 +778,18 @@ TEST_F(Build, WritesOneVolumePerColourForAMultiMaterialPrinter) {
           "--json",
       dir_);
   ASSERT_EQ(two.exit_code, 0) << two.err;
-  EXPECT_NE(two.out.find("\"colors\": [{\"color\": 0, \"rgb\": "
-                         "\"#7B4A2A\", \"triangles\": "),
-            std::string::npos)
-      << two.out;
-  EXPECT_NE(two.out.find("{\"color\": 1, \"rgb\": \"#8CC63F\""),
-            std::string::npos);
-  EXPECT_EQ(two.out.find("\"color\": 2"), std::string::npos) << two.out;
-  EXPECT_NE(two.out.find("\"volumes\": [{\"color\": 0, \"triangles\": "),
-            std::string::npos);
+  const Json colors = Json::parse(two.out)["colors"];
+  ASSERT_EQ(colors.size(), 2U) << two.out;  // no colour 2
+  EXPECT_EQ(colors[0]["color"], 0);
+  EXPECT_EQ(colors[0]["rgb"], "#7B4A2A");
+  EXPECT_GT(colors[0]["triangles"].get<int>(), 0);
+  EXPECT_EQ(colors[1]["color"], 1);
+  EXPECT_EQ(colors[1]["rgb"], "#8CC63F");
+  const Json volumes = Json::parse(two.out)["volumes"];
+  ASSERT_EQ(volumes.size(), 2U) << two.out;
+  EXPECT_EQ(volumes[0]["color"], 0);
+  EXPECT_GT(volumes[0]["triangles"].get<int>(), 0);
+  EXPECT_EQ(volumes[1]["color"], 1);
   const auto check_two = run_command(lsolid() + " check two.3mf", dir_);
   EXPECT_EQ(check_two.exit_code, 0) << check_two.out;
   EXPECT_NE(check_two.out.find("two.3mf: 2 volumes\n"), std::string::npos);
@@ -832,12 +880,13 @@ TEST_F(Build, ReadsPrintSettingsFromTheFile) {
   }
   EXPECT_EQ(run_command(lsolid() + " h.ls", dir_).exit_code, 0);
   const auto check = run_command(lsolid() + " check --json h.stl", dir_);
-  EXPECT_NE(check.out.find(", 0], \"max\": ["), std::string::npos) << check.out;
-  EXPECT_NE(check.out.find(", 20]}"), std::string::npos) << check.out;
+  const Json checked = Json::parse(check.out);
+  EXPECT_EQ(checked["bounds"]["min"][2], 0.0) << check.out;
+  EXPECT_EQ(checked["bounds"]["max"][2], 20.0) << check.out;
   // An octagon whose sides touch a circle of radius 0.5 mm (0.828 mm²)
   // times 20 mm.
-  EXPECT_NE(check.out.find("\"volume_mm3\": 16.568"), std::string::npos)
-      << check.out;
+  EXPECT_GE(checked["volume_mm3"].get<double>(), 16.568) << check.out;
+  EXPECT_LT(checked["volume_mm3"].get<double>(), 16.569) << check.out;
   // The command line wins: a disc 2 mm thick (two walls) under the foot.
   const auto disc = run_command(lsolid() + " h.ls --base disc", dir_);
   EXPECT_EQ(disc.exit_code, 0);

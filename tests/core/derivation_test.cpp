@@ -301,21 +301,23 @@ TEST(Derivation, ServesTheStringInChunks) {
 
 TEST(Derivation, PredictsSizesFromTheCountMatrix) {
   const Grammar g = parse(kHilbert);
-  const auto p = predict_size(g, 8);
+  const auto p = Derivation(g, {.derivation_length = 8}).prediction();
   ASSERT_TRUE(p.has_value());
   EXPECT_TRUE(p->is_exact);
   EXPECT_EQ(p->segments, 16777215.0);  // 8^8 - 1
   const Counts c = count(g, {.derivation_length = 4});
-  EXPECT_EQ(predict_size(g, 4)->modules, static_cast<double>(c.length));
-  EXPECT_FALSE(
-      predict_size(parse("\u03C9: A(1)\nA(x) : x < 3 \u2192 A(x+1)"), 2));
+  EXPECT_EQ(Derivation(g, {.derivation_length = 4}).prediction()->modules,
+            static_cast<double>(c.length));
+  EXPECT_FALSE(Derivation(parse("\u03C9: A(1)\nA(x) : x < 3 \u2192 A(x+1)"),
+                          {.derivation_length = 2})
+                   .prediction());
 }
 
 TEST(Derivation, PredictionFollowsHomomorphismAndDecomposition) {
   const Grammar g = parse(
       "\u03C9: A\nA \u2192 AB\ndecomposition:\nB \u2192 CC\nhomomorphism:\n"
       "C \u2192 FGF\n");
-  const auto p = predict_size(g, 5);
+  const auto p = Derivation(g, {.derivation_length = 5}).prediction();
   ASSERT_TRUE(p.has_value());
   EXPECT_EQ(p->modules, 11.0);  // A and ten C
   EXPECT_EQ(p->segments, 30.0);

@@ -8,6 +8,7 @@
 #include <set>
 #include <tuple>
 
+#include "cgal/hausdorff.hpp"
 #include "lsolid/distance.hpp"
 #include "lsolid/errors.hpp"
 #include "lsolid/solid.hpp"

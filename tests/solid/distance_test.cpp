@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "cgal/hausdorff.hpp"
 #include "support/mesh_checks.hpp"
 
 namespace lsolid {

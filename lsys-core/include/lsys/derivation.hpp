@@ -41,12 +41,6 @@ struct SizePrediction {
   double interpreted_modules = 0.0;  ///< modules the turtle reads
 };
 
-/// Predicts the size of step n when the grammar allows it: context-free,
-/// without conditions or probabilities on productions that can apply, and
-/// without `%`. Returns nothing otherwise.
-[[nodiscard]] std::optional<SizePrediction> predict_size(const Grammar& grammar,
-                                                         int derivation_length);
-
 /// The derivation of a grammar, read in chunks. Context-free grammars
 /// without `%` stream depth-first from the productions (seed 004's
 /// tree-based structure): memory is O(n × longest successor) and the n-th

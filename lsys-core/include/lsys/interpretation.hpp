@@ -29,13 +29,6 @@ struct InterpretOptions {
                                  const DerivationOptions& derivation = {},
                                  const InterpretOptions& options = {});
 
-/// Walks a given string of modules of the grammar's alphabet.
-/// @throws ParseError when a homomorphism expression fails, and as
-///   interpret for values out of range.
-[[nodiscard]] Skeleton interpret_string(const Grammar& grammar,
-                                        const ModuleString& modules,
-                                        const InterpretOptions& options = {});
-
 /// The error for a skeleton with no segment and no polygon, which cannot be
 /// built: placed at what makes it empty where that can be known (the `step`
 /// setting when it is 0, an `F(0)`), else at the axiom.

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "conversion.hpp"
+#include "hausdorff.hpp"
 #include "lsolid/errors.hpp"
 
 namespace lsolid {

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <boost/container_hash/hash.hpp>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
@@ -638,15 +639,7 @@ TriangleKey key_of(const TriangleMesh& mesh,
   return key;
 }
 
-struct TriangleKeyHash {
-  std::size_t operator()(const TriangleKey& k) const noexcept {
-    std::uint64_t h = 0xcbf29ce484222325ULL;
-    for (const std::uint64_t v : k) h = (h ^ v) * 0x100000001b3ULL;
-    return static_cast<std::size_t>(h);
-  }
-};
-
-using TriangleSet = std::unordered_set<TriangleKey, TriangleKeyHash>;
+using TriangleSet = std::unordered_set<TriangleKey, boost::hash<TriangleKey>>;
 
 TriangleSet triangle_set(const TriangleMesh& mesh) {
   TriangleSet set;

@@ -16,6 +16,9 @@
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat4x4.hpp>
 #include <memory>
 #include <numbers>
 
@@ -63,6 +66,7 @@ Image render_preview(const TriangleMesh& mesh, const PreviewOptions& options) {
   const double el = options.elevation_deg * kDeg;
   const glm::dvec3 toward_eye(std::cos(el) * std::cos(az),
                               std::cos(el) * std::sin(az), std::sin(el));
+  // The picture's axes, as glm::lookAt makes them below.
   const glm::dvec3 right =
       glm::normalize(glm::cross(glm::dvec3(0, 0, 1), toward_eye));
   const glm::dvec3 up = glm::cross(toward_eye, right);
@@ -96,26 +100,14 @@ Image render_preview(const TriangleMesh& mesh, const PreviewOptions& options) {
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
   glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glOrtho(-half_x, half_x, -half_y, half_y, -2.0 * depth, 2.0 * depth);
+  const glm::dmat4 projection =
+      glm::ortho(-half_x, half_x, -half_y, half_y, -2.0 * depth, 2.0 * depth);
+  glLoadMatrixd(glm::value_ptr(projection));
   glMatrixMode(GL_MODELVIEW);
-  // Rows right, up, toward_eye; column-major for OpenGL.
-  const std::array<GLdouble, 16> view = {right.x,
-                                         up.x,
-                                         toward_eye.x,
-                                         0.0,
-                                         right.y,
-                                         up.y,
-                                         toward_eye.y,
-                                         0.0,
-                                         right.z,
-                                         up.z,
-                                         toward_eye.z,
-                                         0.0,
-                                         -glm::dot(right, centre),
-                                         -glm::dot(up, centre),
-                                         -glm::dot(toward_eye, centre),
-                                         1.0};
+  // The eye at the box centre, looking away from `toward_eye`: the
+  // orthographic volume reaches two depths to either side of it.
+  const glm::dmat4 view =
+      glm::lookAt(centre, centre - toward_eye, glm::dvec3(0.0, 0.0, 1.0));
   glLoadIdentity();
 
   // Lights in eye space: a key light from the upper left, a dimmer fill
@@ -142,7 +134,7 @@ Image render_preview(const TriangleMesh& mesh, const PreviewOptions& options) {
   glMaterialfv(GL_FRONT_AND_BACK, GL_SPECULAR, shine.data());
   glMaterialf(GL_FRONT_AND_BACK, GL_SHININESS, 24.0F);
   glShadeModel(GL_FLAT);
-  glLoadMatrixd(view.data());
+  glLoadMatrixd(glm::value_ptr(view));
 
   // Each triangle with its own normal (flat shading), as vertex arrays.
   std::vector<GLfloat> positions;

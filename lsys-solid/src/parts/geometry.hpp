@@ -3,7 +3,9 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <bit>
+#include <boost/container_hash/hash.hpp>
 #include <cmath>
 #include <cstdint>
 #include <glm/geometric.hpp>
@@ -53,10 +55,7 @@ inline constexpr double kPi = std::numbers::pi;
 
 /// A node of the skeleton keyed by its exact coordinates: segments that
 /// meet share them exactly, since the turtle does not move between them.
-struct NodeKey {
-  std::uint64_t x, y, z;
-  bool operator==(const NodeKey&) const = default;
-};
+using NodeKey = std::array<std::uint64_t, 3>;
 
 /// The key of a point (-0 and +0 alike).
 [[nodiscard]] inline NodeKey node_key(const glm::dvec3& p) {
@@ -66,11 +65,6 @@ struct NodeKey {
 }
 
 /// A hash of node keys for unordered containers.
-struct NodeKeyHash {
-  std::size_t operator()(const NodeKey& k) const noexcept {
-    return static_cast<std::size_t>(k.x * 0x9E3779B97F4A7C15ULL ^
-                                    (k.y + 0x632BE59BD9B4E019ULL) * 31U ^ k.z);
-  }
-};
+using NodeKeyHash = boost::hash<NodeKey>;
 
 }  // namespace lsolid

@@ -434,7 +434,7 @@ FlatModel flat_model(const lsys::Skeleton& skeleton, const Placement& placement,
     end_at(p0, r0, s.color);
   }
   // A leaf or disc that starts at a branch's tip gets a joint there in the
-  // round model (parts.cpp's add_tip_joint), a wall and a half across at
+  // round model (parts/parts.cpp's add_tip_joint), a wall and a half across at
   // least: the flat model gets a node as wide, so that the round model's
   // witnesses lie inside the footprint (a disc `@o` at each apex of vlab's
   // signal models was reported lost).

@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
 #include <regex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "support/run_command.hpp"
@@ -93,6 +95,44 @@ TEST(Project, CgalIsIncludedOnlyInItsFolderUnderOnePolicy) {
   EXPECT_NE(cmake.find("CGAL_NO_ASSERTIONS"), std::string::npos);
 }
 
+TEST(Project, EachDependencyIsIncludedOnlyBehindItsBoundary) {
+  // One folder (or file) per dependency (docs/design.md, "Layout"): a
+  // library's headers are included only there, so that replacing it, or
+  // reading how lsolid uses it, takes one place.
+  const std::vector<std::pair<std::string, std::string>> homes{
+      {"#include <CGAL/", "lsys-solid/src/cgal/"},
+      {"#include <OpenMesh/", "lsys-solid/src/openmesh/"},
+      {"#include <polyclipping/", "lsys-solid/src/clipper/"},
+      {"#include <GL/", "lsys-solid/src/osmesa/"},
+      {"#include <Model/COM/", "lsys-solid/src/io/threemf.cpp"},
+      {"#include <png.h>", "lsys-solid/src/io/png.cpp"},
+      {"#include <CLI/", "lsys-solid/cli/"},
+      {"#include <nlohmann/", "lsys-solid/cli/"}};
+  std::map<std::string, std::size_t> found;
+  for (const auto& file : sources()) {
+    const std::string name = file.generic_string();
+    if (!name.starts_with("lsys-core/") && !name.starts_with("lsys-solid/")) {
+      continue;  // tests and benchmarks may read files their own way
+    }
+    const std::string text = testing::read_text(kSource / file);
+    for (const auto& [include, home] : homes) {
+      if (text.find(include) == std::string::npos) continue;
+      ++found[include];
+      EXPECT_TRUE(name.starts_with(home)) << name << " has " << include;
+    }
+    // lsys-core depends on GLM alone.
+    if (name.starts_with("lsys-core/")) {
+      for (const char* other : {"#include <fmt/", "#include <boost/",
+                                "#include <CGAL/", "#include <OpenMesh/"}) {
+        EXPECT_EQ(text.find(other), std::string::npos) << name << ": " << other;
+      }
+    }
+  }
+  for (const auto& [include, home] : homes) {
+    EXPECT_GT(found[include], 0U) << include << " is used nowhere";
+  }
+}
+
 // The names of Markdown documents in `text` (`docs/design.md`, `README.md`).
 std::vector<std::string> documents_named(const std::string& text) {
   static const std::regex kDocument(R"([A-Za-z0-9_./-]+\.md\b)");
@@ -139,6 +179,27 @@ TEST(Project, EveryDocumentACommentOrDocNamesIsInTheRepository) {
     }
   }
   EXPECT_GT(named, 10U);
+}
+
+TEST(Project, EverySourceFileTheDesignNamesExists) {
+  // docs/design.md is the map of the code: each stage with the files that
+  // hold it. A file it names that is gone makes the map lie.
+  const std::string design = testing::read_text(kSource / "docs/design.md");
+  static const std::regex kFile(R"(`([A-Za-z0-9_./-]+\.(?:cpp|hpp))`)");
+  std::size_t named = 0;
+  for (auto it = std::sregex_iterator(design.begin(), design.end(), kFile);
+       it != std::sregex_iterator(); ++it) {
+    const std::string file = (*it)[1].str();
+    ++named;
+    bool exists = false;
+    for (const char* root :
+         {"", "lsys-core/", "lsys-solid/", "lsys-core/include/lsys/",
+          "lsys-solid/include/lsolid/", "lsys-core/src/", "lsys-solid/src/"}) {
+      exists = exists || std::filesystem::exists(kSource / (root + file));
+    }
+    EXPECT_TRUE(exists) << "docs/design.md names " << file;
+  }
+  EXPECT_GT(named, 40U);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // A planar figure: it lies in the XZ plane, as ABOP draws it seen from the front.
 // test: n = 4 (the full model, n = 7, is built by 'make gallery', not in CI)
 // expect: segments 4118, polygons 0
+// volume: 2852.3 mm³ as the test builds it (within 1%)
 // Print settings: 100 mm on the longest side, walls of 0.8 mm,
 // and a disc under it where it would tip over.
 size: 100mm

@@ -6,6 +6,7 @@
 // mirrored, which a symmetric tree does not show.
 // test: n = 3 (the full model, n = 6, is built by 'make gallery', not in CI)
 // expect: segments 369, polygons 728
+// volume: 2987.4 mm³ as the test builds it (within 1%)
 // Print settings: 100 mm on the longest side, walls of 0.8 mm,
 // and a disc under it where it would tip over.
 size: 100mm

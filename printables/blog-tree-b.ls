@@ -3,6 +3,7 @@
 // breaks its second rule over a line; here it stands on one.
 // test: n = 5 (the full model, n = 10, is built by 'make gallery', not in CI)
 // expect: segments 2037, polygons 2046
+// volume: 7271.9 mm³ as the test builds it (within 1%)
 // Print settings: 100 mm on the longest side, walls of 0.8 mm,
 // and a disc under it where it would tip over.
 size: 100mm

@@ -2,6 +2,7 @@
 // blog's own symbols and setting names, plus an alias block.
 // test: n = 7 (the full model, n = 13, is built by 'make gallery', not in CI)
 // expect: segments 2186, polygons 0
+// volume: 8088.9 mm³ as the test builds it (within 1%)
 // Print settings: 100 mm on the longest side, walls of 0.8 mm,
 // and a disc under it where it would tip over.
 size: 100mm

@@ -2,6 +2,7 @@
 // Source: seed 000 ("Hilbert Space Filling Curve"), ABOP fig. 1.19 (p. 20).
 // 511 unit segments through the 512 points of a 7 x 7 x 7 lattice box.
 // expect: segments 511, polygons 0
+// volume: 48308.6 mm³ as the test builds it (within 1%)
 // Print settings: 80 mm on the longest side, walls of 0.8 mm;
 // it stands on its bottom face.
 size: 80mm

@@ -3,6 +3,7 @@
 // Curve"), ABOP fig. 1.19 (p. 20). Order n visits 8^n cells: 8^n - 1 unit
 // segments (63 at n = 2, 511 at n = 3).
 // expect: segments 63, polygons 0
+// volume: 26947.5 mm³ as the test builds it (within 1%)
 // Print settings: 60 mm on the longest side, walls of 0.8 mm;
 // it stands on its bottom face.
 size: 60mm

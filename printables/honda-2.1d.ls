@@ -4,6 +4,7 @@
 // 2^10 - 1 = 1023 segments at n = 10.
 // test: n = 7 (the full model, n = 10, is built by 'make gallery', not in CI)
 // expect: segments 1023, polygons 0
+// volume: 2439.8 mm³ as the test builds it (within 1%)
 // Print settings: 100 mm on the longest side, walls of 0.8 mm,
 // and a disc under it where it would tip over.
 size: 100mm

@@ -5,6 +5,7 @@
 // base six times and gives a degenerate polygon; here each `.` stands at its
 // ray's tip, inside the brackets, as the last ray (`[-G.]`) already has it.
 // expect: segments 17, polygons 1
+// volume: 10593.5 mm³ as the test builds it (within 1%)
 // Print settings: 100 mm on the longest side, walls of 0.8 mm,
 // and a disc under it where it would tip over.
 size: 100mm

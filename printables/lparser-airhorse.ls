@@ -3,6 +3,7 @@
 # verbatim in Lparser's notation (docs/dialects/lparser.md).
 # test: n = 7
 # expect: segments 586, polygons 90
+# volume: 20742.0 mm³ as the test builds it (within 1%)
 # --- L-System Parser/Mutator --- Lj Lapre ----------------------------------
 18					# recursion level
 10					# basic angle

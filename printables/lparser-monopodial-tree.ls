@@ -4,6 +4,7 @@
 # Lparser's notation (docs/dialects/lparser.md).
 # test: n = 6
 # expect: segments 1025, polygons 512
+# volume: 1733.9 mm³ as the test builds it (within 1%)
 # --- L-System Parser/Mutator --- Lj Lapre ----------------------------------
 #
 # Monopodial skeleton

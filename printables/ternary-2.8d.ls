@@ -3,6 +3,7 @@
 // (docs/turtle.md): (x, y, z) in ABOP is (x, -z, y) here.
 // test: n = 3 (the full model, n = 6, is built by 'make gallery', not in CI)
 // expect: segments 1457, polygons 0
+// volume: 3821.3 mm³ as the test builds it (within 1%)
 // Print settings: 100 mm on the longest side, walls of 0.8 mm,
 // and a disc under it where it would tip over.
 size: 100mm

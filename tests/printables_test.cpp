@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <regex>
 #include <string>
 #include <vector>
@@ -112,6 +113,27 @@ TEST_P(Printable, DerivesTheStatedSkeleton) {
   }
 }
 
+// The volume the solid test must build, from the file's `// volume: V mm³`
+// line: the model's volume at the test's n, met to within 1% (decimation
+// may move the surface by its tolerance; a lost branch or leaf moves the
+// volume by more).
+std::optional<double> stated_volume_mm3(const std::string& text) {
+  std::smatch match;
+  static const std::regex kLine(comment_line("volume") +
+                                R"(([0-9]+(?:\.[0-9]+)?) mm³)");
+  if (!std::regex_search(text, match, kLine)) return std::nullopt;
+  return std::stod(match[1]);
+}
+
+// The volume the build reports (`volume: V mm³`).
+std::optional<double> reported_volume_mm3(const std::string& report) {
+  std::smatch match;
+  static const std::regex kLine(
+      R"((?:^|\n)volume: ([0-9]+(?:\.[0-9]+)?) mm³\n)");
+  if (!std::regex_search(report, match, kLine)) return std::nullopt;
+  return std::stod(match[1]);
+}
+
 // The derivation length for the solid test: the file's `// test: n = K`,
 // else the file's own.
 std::string test_length_option(const std::string& text) {
@@ -132,6 +154,11 @@ TEST_P(Printable, BuildsAnStlThatCheckAndAdmeshAccept) {
   ASSERT_EQ(built.exit_code, 0) << built.out << built.err;
   EXPECT_NE(built.out.find("check: printable"), std::string::npos) << built.out;
   EXPECT_NE(built.out.find("; 1 shell,"), std::string::npos) << built.out;
+  const std::optional<double> stated = stated_volume_mm3(text);
+  const std::optional<double> reported = reported_volume_mm3(built.out);
+  ASSERT_TRUE(stated) << "no 'volume: V mm³' comment line";
+  ASSERT_TRUE(reported) << built.out;
+  EXPECT_NEAR(*reported, *stated, 0.01 * *stated) << built.out;
   const auto checked = lsolid::testing::run_command(
       lsolid::testing::lsolid() + " check --json '" + stl.string() + "'");
   EXPECT_EQ(checked.exit_code, 0) << checked.out;

@@ -27,35 +27,46 @@ using testing::read_text;
 using testing::run_command;
 using Json = nlohmann::ordered_json;
 
+// The command succeeded, printing exactly `out`.
+void expect_output(const testing::CommandResult& r, const std::string& out) {
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, out);
+}
+
+// The command failed with `exit_code`, saying exactly `err` on standard
+// error.
+void expect_failure(const testing::CommandResult& r, int exit_code,
+                    const std::string& err) {
+  EXPECT_EQ(r.exit_code, exit_code) << r.out;
+  EXPECT_EQ(r.err, err);
+}
+
 const std::filesystem::path kSource = LSOLID_SOURCE_DIR;
 const std::filesystem::path kDiagnostics = kSource / "tests/data/diagnostics";
 
 TEST(Cli, DerivePrintsTheString) {
   const auto r = run_command(lsolid() + " derive hilbert-cube.ls -n 1",
                              kSource / "printables");
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(r.out, "B-F+CFC+F-D&F^D-F+&&CFC+F+B//\n");
+  expect_output(r, "B-F+CFC+F-D&F^D-F+&&CFC+F+B//\n");
 }
 
 TEST(Cli, DerivePrintsParametersInShortestForm) {
   const auto r = run_command(lsolid() + " derive honda-2.1a.ls -n 1",
                              kSource / "printables");
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(r.out,
-            "!(10)F(1)[&(45)B(0.6,7.069999999999999)]/(137.5)"
-            "A(0.9,7.069999999999999)\n");
+  expect_output(r,
+                "!(10)F(1)[&(45)B(0.6,7.069999999999999)]/(137.5)"
+                "A(0.9,7.069999999999999)\n");
 }
 
 TEST(Cli, DeriveStatsPrintsLengthCountsAndDepth) {
   const auto r = run_command(lsolid() + " derive abop-1.25-bush.ls --stats",
                              kSource / "printables");
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(r.out,
-            "{\"length\":77399,\"modules\":{\"!\":3279,\"&\":3279,"
-            "\"'\":6038,\"+\":5136,\"-\":3852,\"/\":22596,\"A\":2187,"
-            "\"F\":3891,\"L\":2607,\"S\":1284,\"[\":4563,\"]\":4563,"
-            "\"^\":2568,\"f\":7704,\"{\":1284,\"|\":1284,\"}\":1284},"
-            "\"max_depth\":7}\n");
+  expect_output(r,
+                "{\"length\":77399,\"modules\":{\"!\":3279,\"&\":3279,"
+                "\"'\":6038,\"+\":5136,\"-\":3852,\"/\":22596,\"A\":2187,"
+                "\"F\":3891,\"L\":2607,\"S\":1284,\"[\":4563,\"]\":4563,"
+                "\"^\":2568,\"f\":7704,\"{\":1284,\"|\":1284,\"}\":1284},"
+                "\"max_depth\":7}\n");
 }
 
 TEST(Cli, DefinesAndSeedsComeFromTheCommandLine) {
@@ -63,8 +74,7 @@ TEST(Cli, DefinesAndSeedsComeFromTheCommandLine) {
                                  " derive honda-2.1a.ls -n 1 --define wr=0.5 "
                                  "--define r2=0.5",
                              kSource / "printables");
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(r.out, "!(10)F(1)[&(45)B(0.5,5)]/(137.5)A(0.9,5)\n");
+  expect_output(r, "!(10)F(1)[&(45)B(0.5,5)]/(137.5)A(0.9,5)\n");
 }
 
 TEST(Cli, SkeletonJsonHasPointsRadiiAndColours) {
@@ -84,10 +94,10 @@ TEST(Cli, SkeletonJsonHasPointsRadiiAndColours) {
 TEST(Cli, SkeletonSummarisesWithoutJson) {
   const auto r = run_command(lsolid() + " skeleton hilbert-cube.ls",
                              kSource / "printables");
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(r.out,
-            "segments: 63\npolygons: 0\nbounds: [0, 0, 0] to [3, 3, 3] model "
-            "units\n");
+  expect_output(
+      r,
+      "segments: 63\npolygons: 0\nbounds: [0, 0, 0] to [3, 3, 3] model "
+      "units\n");
 }
 
 TEST(Cli, HelpShowsExamplesAndVersionShowsTheVersion) {
@@ -300,36 +310,33 @@ TEST_F(Build, RendersAPreviewBesideTheMesh) {
   EXPECT_NE(r.out.find("rendered b.png\n"), std::string::npos);
   EXPECT_EQ(read_text(dir_ / "b.png").substr(0, 8), "\x89PNG\r\n\x1a\n");
   const auto bad = run_command(lsolid() + " b.ls --preview b.jpg", dir_);
-  EXPECT_EQ(bad.exit_code, 2);
-  EXPECT_EQ(bad.err,
-            "--preview: error: a preview is a PNG: name it FILE.png, not "
-            "'b.jpg'\n");
+  expect_failure(bad, 2,
+                 "--preview: error: a preview is a PNG: name it FILE.png, not "
+                 "'b.jpg'\n");
   EXPECT_FALSE(std::filesystem::exists(dir_ / "b.jpg"));
 }
 
 TEST_F(Build, RefusesAnUnknownBase) {
   use_printable("branches-90", "b.ls");
   const auto r = run_command(lsolid() + " b.ls --base wobbly", dir_);
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.err,
-            "--base:1:1: error: base must be auto, disc or none, not "
-            "'wobbly'\nwobbly\n^\n");
+  expect_failure(r, 2,
+                 "--base:1:1: error: base must be auto, disc or none, not "
+                 "'wobbly'\nwobbly\n^\n");
   { std::ofstream(dir_ / "c.ls") << "base: tripod\n\u03C9: F\n"; }
   const auto file = run_command(lsolid() + " c.ls", dir_);
-  EXPECT_EQ(file.exit_code, 2);
-  EXPECT_EQ(file.err,
-            "c.ls:1:7: error: base must be auto, disc or none, not 'tripod'\n"
-            "base: tripod\n"
-            "      ^\n");
+  expect_failure(
+      file, 2,
+      "c.ls:1:7: error: base must be auto, disc or none, not 'tripod'\n"
+      "base: tripod\n"
+      "      ^\n");
 }
 
 TEST_F(Build, ChoosesTheProfileOfAFlatModelAndRefusesAnUnknownOne) {
   use_printable("branches-90", "b.ls");
   const auto r = run_command(lsolid() + " b.ls --profile square", dir_);
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.err,
-            "--profile:1:1: error: profile must be flat or round, not "
-            "'square'\nsquare\n^\n");
+  expect_failure(r, 2,
+                 "--profile:1:1: error: profile must be flat or round, not "
+                 "'square'\nsquare\n^\n");
   const auto flat = run_command(lsolid() + " b.ls --json -o f.stl", dir_);
   EXPECT_EQ(flat.exit_code, 0) << flat.err;
   EXPECT_EQ(Json::parse(flat.out)["profile"], "flat") << flat.out;
@@ -563,19 +570,17 @@ TEST_F(Build, RefusesAPrintSettingGivenTwice) {
         << "wall: 0.8mm\nbase: none\nwall: 2mm\n\u03C9: F\n";
   }
   const auto r = run_command(lsolid() + " t.ls", dir_);
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.err,
-            "t.ls:3:7: error: 'wall' is set twice\n"
-            "wall: 2mm\n"
-            "      ^\n");
+  expect_failure(r, 2,
+                 "t.ls:3:7: error: 'wall' is set twice\n"
+                 "wall: 2mm\n"
+                 "      ^\n");
   EXPECT_FALSE(std::filesystem::exists(dir_ / "t.stl"));
 }
 
 TEST_F(Build, ChecksTheOutputFoldersBeforeBuilding) {
   use_printable("branches-90", "b.ls");
   const auto r = run_command(lsolid() + " b.ls --preview nowhere/b.png", dir_);
-  EXPECT_EQ(r.exit_code, 4);
-  EXPECT_EQ(r.err, "error: nowhere/b.png: no folder nowhere\n");
+  expect_failure(r, 4, "error: nowhere/b.png: no folder nowhere\n");
   EXPECT_EQ(r.out, "");  // refused before the build
   EXPECT_FALSE(std::filesystem::exists(dir_ / "b.stl"));
 }
@@ -583,9 +588,9 @@ TEST_F(Build, ChecksTheOutputFoldersBeforeBuilding) {
 TEST_F(Build, RefusesOptionsThatWouldBeIgnored) {
   use_printable("branches-90", "b.ls");
   const auto ascii = run_command(lsolid() + " b.ls --ascii -o b.off", dir_);
-  EXPECT_EQ(ascii.exit_code, 2);
-  EXPECT_EQ(ascii.err,
-            "--ascii: error: --ascii is for STL; 'b.off' is not an STL file\n");
+  expect_failure(
+      ascii, 2,
+      "--ascii: error: --ascii is for STL; 'b.off' is not an STL file\n");
   const auto force = run_command(lsolid() + " b.ls --force", dir_);
   EXPECT_EQ(force.exit_code, 2);
   EXPECT_NE(force.err.find("--force requires --bed"), std::string::npos)
@@ -851,19 +856,19 @@ TEST_F(Build, CheckFindsVolumesThatOverlap) {
 TEST_F(Build, RefusesUnknownFormatsAndEmptyModels) {
   use_printable("branches-90", "b.ls");
   const auto r = run_command(lsolid() + " b.ls -o b.ply", dir_);
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.err,
-            "--output: error: unknown output format '.ply': use .stl, .off, "
-            ".scad, .3mf or .obj\n");
+  expect_failure(
+      r, 2,
+      "--output: error: unknown output format '.ply': use .stl, .off, "
+      ".scad, .3mf or .obj\n");
   { std::ofstream(dir_ / "empty.ls") << "\u03C9: A+B\n"; }
   // Drawing nothing is bad input, placed at the axiom.
   const auto empty = run_command(lsolid() + " empty.ls", dir_);
-  EXPECT_EQ(empty.exit_code, 2);
-  EXPECT_EQ(empty.err,
-            "empty.ls:1:4: error: nothing to build: the L-system draws no "
-            "segment and no polygon; modules without a turtle meaning draw "
-            "nothing (map them with an alias block, e.g. 'aliases: Fl=F "
-            "Fr=F')\n\u03C9: A+B\n   ^\n");
+  expect_failure(
+      empty, 2,
+      "empty.ls:1:4: error: nothing to build: the L-system draws no "
+      "segment and no polygon; modules without a turtle meaning draw "
+      "nothing (map them with an alias block, e.g. 'aliases: Fl=F "
+      "Fr=F')\n\u03C9: A+B\n   ^\n");
   // A skeleton in millimetres cannot be scaled either; in model units it
   // is shown empty, with a warning.
   const auto mm = run_command(lsolid() + " skeleton empty.ls --wall 1mm", dir_);

@@ -19,21 +19,9 @@ namespace {
 
 using testing::located_error_of;
 
+constexpr testing::Notation kCpfg{Dialect::Cpfg, "plant.l"};
+
 constexpr std::string_view kHead = "Lsystem: 1\nderivation length: 1\n";
-
-Grammar cpfg(std::string_view text, ParseOptions options = {}) {
-  options.dialect = Dialect::Cpfg;
-  return parse_grammar_text(text, options, "plant.l");
-}
-
-std::string derived_cpfg(std::string_view text) {
-  const Grammar g = cpfg(text);
-  return to_string(derive(g), g.alphabet);
-}
-
-std::string cpfg_error(std::string_view text) {
-  return located_error_of([&] { (void)cpfg(text); });
-}
 
 // A folder of its own for files that the front end finds beside each other.
 class CpfgFiles : public ::testing::Test {
@@ -134,7 +122,7 @@ TEST_F(CpfgFiles, ExpandsMacrosInTheViewFileAndPlacesItsErrorsAtTheValue) {
 }
 
 TEST(Cpfg, ExpandsMacrosWithParametersAndModuleStringsAsTheCPreprocessor) {
-  const Grammar g = cpfg(
+  const Grammar g = kCpfg.parse(
       "#define STEPS 2 /* kept as a constant */\n"
       "#define BRANCH(a) [+(a*2)F]\n"
       "#define TWIG BRANCH(10)F\n"
@@ -150,8 +138,8 @@ TEST(Cpfg, ExpandsMacrosWithParametersAndModuleStringsAsTheCPreprocessor) {
 
 TEST(Cpfg, KeepsTheTextualMeaningOfAMacroThatIsNotAConstant) {
   // cpp gives 2*1+1 = 3, not 2*(1+1) = 4.
-  EXPECT_EQ(derived_cpfg("#define SUM 1+1\nLsystem: 1\nAxiom: A(2*SUM)\n"
-                         "endlsystem\n"),
+  EXPECT_EQ(kCpfg.derived("#define SUM 1+1\nLsystem: 1\nAxiom: A(2*SUM)\n"
+                          "endlsystem\n"),
             "A(3)");
 }
 
@@ -160,25 +148,25 @@ TEST(Cpfg, ChoosesTheBranchOfAnIfdef) {
       "#define LONG\n"
       "Lsystem: 1\nderivation length: 1\nAxiom: A\n"
       "#ifdef LONG\nA --> FF\n#else\nA --> F\n#endif\nendlsystem\n";
-  EXPECT_EQ(derived_cpfg(text), "FF");
-  EXPECT_EQ(derived_cpfg(text.substr(text.find('\n') + 1)), "F");
+  EXPECT_EQ(kCpfg.derived(text), "FF");
+  EXPECT_EQ(kCpfg.derived(text.substr(text.find('\n') + 1)), "F");
 }
 
 TEST(Cpfg, PlacesErrorsAfterAnExpandedMacroWhereTheyStandInTheFile) {
-  EXPECT_EQ(cpfg_error("#define LONGNAME F\nLsystem: 1\n"
-                       "Axiom: LONGNAME F(\nendlsystem\n"),
+  EXPECT_EQ(kCpfg.error("#define LONGNAME F\nLsystem: 1\n"
+                        "Axiom: LONGNAME F(\nendlsystem\n"),
             "3:18: unclosed '('");
-  EXPECT_EQ(cpfg_error("#define M(a,b) F(a)\nLsystem: 1\nAxiom: M(1)\n"),
+  EXPECT_EQ(kCpfg.error("#define M(a,b) F(a)\nLsystem: 1\nAxiom: M(1)\n"),
             "3:8: macro 'M' takes 2 arguments, here 1");
   // An unclosed call inside a macro's body is placed at the use.
-  EXPECT_EQ(cpfg_error("#define A(x) x\n#define B A(1\nLsystem: 1\n"
-                       "Axiom: F B\n"),
+  EXPECT_EQ(kCpfg.error("#define A(x) x\n#define B A(1\nLsystem: 1\n"
+                        "Axiom: F B\n"),
             "4:10: unclosed '(' in the call of macro 'A'");
-  EXPECT_EQ(cpfg_error("Lsystem: 1\n#if 1\nAxiom: F\n"),
+  EXPECT_EQ(kCpfg.error("Lsystem: 1\n#if 1\nAxiom: F\n"),
             "2:1: '#if' without '#endif'");
-  EXPECT_EQ(cpfg_error("#include \"leaf.h\"\nLsystem: 1\nAxiom: F\n"),
+  EXPECT_EQ(kCpfg.error("#include \"leaf.h\"\nLsystem: 1\nAxiom: F\n"),
             "1:1: #include \"leaf.h\": no such file beside this one (leaf.h)");
-  EXPECT_EQ(cpfg_error("#include <stdio.h>\nLsystem: 1\nAxiom: F\n"),
+  EXPECT_EQ(kCpfg.error("#include <stdio.h>\nLsystem: 1\nAxiom: F\n"),
             "1:1: #include <stdio.h>: a header lsolid does not have");
 }
 
@@ -209,9 +197,9 @@ TEST_F(CpfgFiles, ReadsAnIncludedFileBesideItWithItsMacrosAndConstants) {
 }
 
 TEST(Cpfg, ContinuesAStatementOnALineThatStartsWithATab) {
-  EXPECT_EQ(derived_cpfg(std::string(kHead) +
-                         "Axiom: A(2)\nA(t) : t>0\n\t--> F(t)A(t-1)\n"
-                         "endlsystem\n"),
+  EXPECT_EQ(kCpfg.derived(std::string(kHead) +
+                          "Axiom: A(2)\nA(t) : t>0\n\t--> F(t)A(t-1)\n"
+                          "endlsystem\n"),
             "F(2)A(1)");
 }
 
@@ -219,7 +207,7 @@ TEST(Cpfg, TakesProbabilitiesOnlyWithASeedAsCpfgDoes) {
   const std::string rules =
       "derivation length: 1\nAxiom: A\nA --> B : 1\nA --> C : 99\n"
       "endlsystem\n";
-  const Grammar plain = cpfg("Lsystem: 1\n" + rules);
+  const Grammar plain = kCpfg.parse("Lsystem: 1\n" + rules);
   EXPECT_EQ(to_string(derive(plain), plain.alphabet), "B");
   const auto warns_of_seed = [](const Grammar& g) {
     return std::count_if(
@@ -228,14 +216,14 @@ TEST(Cpfg, TakesProbabilitiesOnlyWithASeedAsCpfgDoes) {
         });
   };
   EXPECT_EQ(warns_of_seed(plain), 1);
-  const Grammar seeded = cpfg("Lsystem: 1\nseed: 7\n" + rules);
+  const Grammar seeded = kCpfg.parse("Lsystem: 1\nseed: 7\n" + rules);
   EXPECT_TRUE(seeded.productions.front().probability.has_value());
   EXPECT_EQ(warns_of_seed(seeded), 0);
 }
 
 TEST(Cpfg, IgnoresTheParametersTheTurtleDoesNotRead) {
   const Grammar g =
-      cpfg("Lsystem: 1\nAxiom: F(2,5,1)+(90,0)F(1)\nendlsystem\n");
+      kCpfg.parse("Lsystem: 1\nAxiom: F(2,5,1)+(90,0)F(1)\nendlsystem\n");
   const Skeleton s = interpret(g);
   ASSERT_EQ(s.segments.size(), 2U);
   EXPECT_NEAR(glm::length(s.segments[0].p1 - s.segments[0].p0), 2.0, 1e-12);
@@ -327,8 +315,8 @@ TEST_F(CpfgFiles, RefusesAMovementItCannotReadAndWarnsOfOneNotDefined) {
 }
 
 TEST(Cpfg, DrawsNothingForTheEndOfASubLsystemOrAnApostrophe) {
-  const Skeleton s =
-      interpret(cpfg("Lsystem: 1\nAxiom: F$F'F@!(3)@Tx(1)\nendlsystem\n"));
+  const Skeleton s = interpret(
+      kCpfg.parse("Lsystem: 1\nAxiom: F$F'F@!(3)@Tx(1)\nendlsystem\n"));
   ASSERT_EQ(s.segments.size(), 3U);
   EXPECT_NEAR(s.segments[2].p1.z, 3.0, 1e-12);
 }
@@ -336,7 +324,7 @@ TEST(Cpfg, DrawsNothingForTheEndOfASubLsystemOrAnApostrophe) {
 TEST(Cpfg, DrawsASphereOfTheWidthOrOfTheDiameterGiven) {
   // cpfg's blackbox.c: `@O` without a parameter takes the line width.
   const Skeleton s =
-      interpret(cpfg("Lsystem: 1\nAxiom: !(3)F@O@O(2.5)\nendlsystem\n"));
+      interpret(kCpfg.parse("Lsystem: 1\nAxiom: !(3)F@O@O(2.5)\nendlsystem\n"));
   ASSERT_EQ(s.spheres.size(), 2U);
   EXPECT_DOUBLE_EQ(s.spheres[0].diameter, s.segments[0].end_diameter);
   EXPECT_DOUBLE_EQ(s.spheres[1].diameter, 2.5);
@@ -348,8 +336,8 @@ TEST(Cpfg, DrawsDiscsAcrossUpOrFacingTheViewer) {
   // the viewer on cpfg's z axis (lsolid's y); without a parameter, of the
   // line width.
   const Skeleton s =
-      interpret(cpfg("Lsystem: 1\nAxiom: !(0.5)F&(90)@c(2)@o@c(0)\n"
-                     "endlsystem\n"));
+      interpret(kCpfg.parse("Lsystem: 1\nAxiom: !(0.5)F&(90)@c(2)@o@c(0)\n"
+                            "endlsystem\n"));
   ASSERT_EQ(s.polygons.size(), 2U);
   const glm::dvec3 tip = s.segments[0].p1;
   testing::expect_disc(s.polygons[0], tip, glm::dvec3(0, 0, 1), 2.0);
@@ -362,8 +350,8 @@ TEST(Cpfg, DrawsDiscsAcrossUpOrFacingTheViewer) {
 TEST(Cpfg, DrawsAGeneralizedCylinderInPiecesAlongItsHermiteCurve) {
   // Straight: its pieces on the axis, chained, `F` inside drawing none.
   const Skeleton line =
-      interpret(cpfg("Lsystem: 1\nAxiom: @Gs F(2) @Gc(4) f(2) @Ge(2)\n"
-                     "endlsystem\n"));
+      interpret(kCpfg.parse("Lsystem: 1\nAxiom: @Gs F(2) @Gc(4) f(2) @Ge(2)\n"
+                            "endlsystem\n"));
   ASSERT_EQ(line.segments.size(), 6U);
   EXPECT_EQ(line.segments[0].p0, glm::dvec3(0, 0, 0));
   EXPECT_EQ(line.segments[5].p1, glm::dvec3(0, 0, 4));
@@ -375,8 +363,8 @@ TEST(Cpfg, DrawsAGeneralizedCylinderInPiecesAlongItsHermiteCurve) {
   // first left (-1, 0, 0), times the chord 1 and cpfg's factor 1.2, make
   // the middle of the curve (p1 + p2) / 2 + (t1 - t2) / 8.
   const Skeleton bent =
-      interpret(cpfg("Lsystem: 1\nAxiom: !(2)@Gs +(90) f(1) !(4)@Ge(2)\n"
-                     "endlsystem\n"));
+      interpret(kCpfg.parse("Lsystem: 1\nAxiom: !(2)@Gs +(90) f(1) !(4)@Ge(2)\n"
+                            "endlsystem\n"));
   ASSERT_EQ(bent.segments.size(), 2U);
   EXPECT_NEAR(bent.segments[0].p1.x, -0.5 + 1.2 / 8, 1e-12);
   EXPECT_NEAR(bent.segments[0].p1.y, 0.0, 1e-12);
@@ -386,8 +374,8 @@ TEST(Cpfg, DrawsAGeneralizedCylinderInPiecesAlongItsHermiteCurve) {
   EXPECT_DOUBLE_EQ(bent.segments[0].end_diameter, 1.5 * w);
   EXPECT_DOUBLE_EQ(bent.segments[1].end_diameter, 2.0 * w);
   // `@Gt(0)`: no tangents, a straight chord.
-  const Skeleton chord = interpret(
-      cpfg("Lsystem: 1\nAxiom: @Gt(0)@Gs +(90) f(1) @Ge(2)\nendlsystem\n"));
+  const Skeleton chord = interpret(kCpfg.parse(
+      "Lsystem: 1\nAxiom: @Gt(0)@Gs +(90) f(1) @Ge(2)\nendlsystem\n"));
   ASSERT_EQ(chord.segments.size(), 2U);
   EXPECT_NEAR(chord.segments[0].p1.x, -0.5, 1e-12);
   EXPECT_NEAR(chord.segments[0].p1.z, 0.0, 1e-12);
@@ -397,9 +385,9 @@ TEST(Cpfg, ShapesACylindersRadiusAlongTheTangentsOfGr) {
   // From radius 0 to 0: a start tangent (0, 2) (90°, length 2) and the
   // default (1, 0) at the end make the ring at r = 1/2 sit at curve
   // parameter t = h01 + h11 = 0.375 with radius 2·h10 = 0.25.
-  const Skeleton s = interpret(
-      cpfg("Lsystem: 1\nAxiom: !(0) @Gr(0,0,90,2) @Gs f(2) @Gr(0,0) @Ge(2)\n"
-           "endlsystem\n"));
+  const Skeleton s = interpret(kCpfg.parse(
+      "Lsystem: 1\nAxiom: !(0) @Gr(0,0,90,2) @Gs f(2) @Gr(0,0) @Ge(2)\n"
+      "endlsystem\n"));
   ASSERT_EQ(s.segments.size(), 2U);
   EXPECT_EQ(s.segments[0].start_diameter, 0.0);
   // The radius tangents are in model units, whatever unit the widths are.
@@ -410,17 +398,17 @@ TEST(Cpfg, ShapesACylindersRadiusAlongTheTangentsOfGr) {
 }
 
 TEST(Cpfg, RefusesWhatLsolidCannotDrawByNameAtItsPlace) {
-  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: F~l(2)\n"),
+  EXPECT_EQ(kCpfg.error("Lsystem: 1\nAxiom: F~l(2)\n"),
             "2:9: '~' (a predefined surface that no surface: line of the "
             "view names) is not supported by lsolid");
-  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: F\nF --> F@bo(2)\n"),
+  EXPECT_EQ(kCpfg.error("Lsystem: 1\nAxiom: F\nF --> F@bo(2)\n"),
             "3:8: '@bo' (a circle) is not supported by lsolid");
-  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: A\nA > ?E(x) --> B\n"),
+  EXPECT_EQ(kCpfg.error("Lsystem: 1\nAxiom: A\nA > ?E(x) --> B\n"),
             "3:5: '?E' (a query of the environment, which needs cpfg's "
             "environment programs) is not supported by lsolid");
-  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: A?(2,1)B$\n"),
+  EXPECT_EQ(kCpfg.error("Lsystem: 1\nAxiom: A?(2,1)B$\n"),
             "2:9: '?' (a sub-L-system call) is not supported by lsolid");
-  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: {(1)F}(1)\n"),
+  EXPECT_EQ(kCpfg.error("Lsystem: 1\nAxiom: {(1)F}(1)\n"),
             "2:8: cpfg's '{(n)' (a generalized cylinder) is not supported; "
             "write '{' for a polygon");
 }
@@ -429,32 +417,32 @@ TEST(Cpfg, RefusesWhatLsolidCannotDrawByNameAtItsPlace) {
 // the string and each query takes the position or frame where it stands, in
 // cpfg's Y-up coordinates, so a context can read where the apex is.
 TEST(Cpfg, AnswersQueriesWithThePositionAndFrameBeforeEachStep) {
-  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 1\n"
-                         "Axiom: F(2)+(90)F(3)?P(0,0,0)?H(0,0,0)?L(0,0,0)"
-                         "?U(0,0,0)\n"),
+  EXPECT_EQ(kCpfg.derived("Lsystem: 1\nderivation length: 1\n"
+                          "Axiom: F(2)+(90)F(3)?P(0,0,0)?H(0,0,0)?L(0,0,0)"
+                          "?U(0,0,0)\n"),
             "F(2)+(90)F(3) ?P(-3,2,0) ?H(-1,0,0) ?L(0,-1,0) ?U(0,0,-1)");
   // cpfg's `&` turns H toward its U, (0, 0, −1) at the start.
-  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 1\n"
-                         "Axiom: &(90)F?P(0,0,0)?U(0,0,0)\n"),
+  EXPECT_EQ(kCpfg.derived("Lsystem: 1\nderivation length: 1\n"
+                          "Axiom: &(90)F?P(0,0,0)?U(0,0,0)\n"),
             "&(90)F ?P(0,0,-1) ?U(0,-1,0)");
   // The apex grows while it is below y = 3, reading its height from the
   // query beside it, and stops the step after; a query with fewer
   // parameters takes the first coordinates only.
-  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 6\n"
-                         "Axiom: A?P(0,0)\n"
-                         "A > ?P(x,y) : y < 3 --> FA\n"),
+  EXPECT_EQ(kCpfg.derived("Lsystem: 1\nderivation length: 6\n"
+                          "Axiom: A?P(0,0)\n"
+                          "A > ?P(x,y) : y < 3 --> FA\n"),
             "FFFA ?P(0,3)");
   // The homomorphism draws what the turtle walks, as in cpfg.
-  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 1\n"
-                         "Axiom: B?P(0,0,0)\n"
-                         "homomorphism\nB --> F(5)\nendlsystem\n"),
+  EXPECT_EQ(kCpfg.derived("Lsystem: 1\nderivation length: 1\n"
+                          "Axiom: B?P(0,0,0)\n"
+                          "homomorphism\nB --> F(5)\nendlsystem\n"),
             "B ?P(0,5,0)");
 }
 
 // cpfg takes a name that nothing defines as 0, with a warning
 // ("Identifier not previously defined"), and so does lsolid.
 TEST(Cpfg, TakesAnUndefinedNameAsAVariableOfZeroWithAWarning) {
-  const Grammar g = cpfg(
+  const Grammar g = kCpfg.parse(
       "Lsystem: 1\nderivation length: 1\nAxiom: A(2)\n"
       "A(x) --> B(x + t) C(t)\nendlsystem\n");
   EXPECT_EQ(to_string(derive(g), g.alphabet), "B(2)C(0)");
@@ -463,14 +451,14 @@ TEST(Cpfg, TakesAnUndefinedNameAsAVariableOfZeroWithAWarning) {
                       "takes it"),
             g.warnings.end());
   // A statement that assigns it makes it a variable from there on.
-  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 1\nAxiom: A(2)\n"
-                         "A(x) : {y = u + 1; u = 5;} * --> B(y, u)\n"
-                         "endlsystem\n"),
+  EXPECT_EQ(kCpfg.derived("Lsystem: 1\nderivation length: 1\nAxiom: A(2)\n"
+                          "A(x) : {y = u + 1; u = 5;} * --> B(y, u)\n"
+                          "endlsystem\n"),
             "B(1,5)");
 }
 
 TEST(Cpfg, RefusesRingLsystemsAtTheirPlace) {
-  EXPECT_EQ(cpfg_error("Lsystem: 1\nring lsystem\nAxiom: F\n"),
+  EXPECT_EQ(kCpfg.error("Lsystem: 1\nring lsystem\nAxiom: F\n"),
             "2:1: a ring L-system (contexts that wrap around the string) is "
             "not supported");
 }
@@ -478,7 +466,7 @@ TEST(Cpfg, RefusesRingLsystemsAtTheirPlace) {
 // cpfg's `define:` block (lsys_input.y): arrays of global variables, row by
 // row, which expressions index and statements assign.
 TEST(Cpfg, ReadsTheArraysOfADefineBlock) {
-  const Grammar g = cpfg(
+  const Grammar g = kCpfg.parse(
       "Lsystem: 1\nderivation length: 1\n"
       "define: { array a[3] = {1, 2, 3}, m[2][3] =\n"
       "    {1, 2, 3, 4, 5, 6};\n  array z[2]; }\n"
@@ -487,24 +475,24 @@ TEST(Cpfg, ReadsTheArraysOfADefineBlock) {
       "endlsystem\n");
   EXPECT_EQ(to_string(derive(g), g.alphabet), "F(2)F(6)F(30)F(2)F(5)");
   EXPECT_EQ(g.warnings.size(), 1U);  // no view file
-  const Grammar few =
-      cpfg("Lsystem: 1\ndefine: { array a[3] = {1}; }\nAxiom: F(a[2])\n");
+  const Grammar few = kCpfg.parse(
+      "Lsystem: 1\ndefine: { array a[3] = {1}; }\nAxiom: F(a[2])\n");
   EXPECT_EQ(to_string(derive(few), few.alphabet), "F(0)");
   EXPECT_EQ(few.warnings.back(),
             "line 2: array 'a' of 3 elements is given 1 values: the rest are "
             "0, as in cpfg");
   EXPECT_EQ(located_error_of([] {
               (void)derive(
-                  cpfg("Lsystem: 1\ndefine: { array a[3]; }\n"
-                       "Axiom: A(3)\nA(i) --> F(a[i])\n"));
+                  kCpfg.parse("Lsystem: 1\ndefine: { array a[3]; }\n"
+                              "Axiom: A(3)\nA(i) --> F(a[i])\n"));
             }),
             "4:14: subscript 3 is out of range: this dimension of the array "
             "has 3 elements, 0 to 2");
-  EXPECT_EQ(cpfg_error("Lsystem: 1\ndefine: { array a[3]; }\nAxiom: F(a)\n"),
+  EXPECT_EQ(kCpfg.error("Lsystem: 1\ndefine: { array a[3]; }\nAxiom: F(a)\n"),
             "3:11: 'a' is an array of 1 dimension: expected '['");
-  EXPECT_EQ(cpfg_error("Lsystem: 1\ndefine: { array a[0]; }\nAxiom: F\n"),
+  EXPECT_EQ(kCpfg.error("Lsystem: 1\ndefine: { array a[0]; }\nAxiom: F\n"),
             "2:19: an array's dimension must be a whole number, at least 1");
-  EXPECT_EQ(cpfg_error("Lsystem: 1\ndefine: { x = 1; }\nAxiom: F\n"),
+  EXPECT_EQ(kCpfg.error("Lsystem: 1\ndefine: { x = 1; }\nAxiom: F\n"),
             "2:11: expected 'array' in a define: block");
 }
 
@@ -512,60 +500,61 @@ TEST(Cpfg, ReadsTheArraysOfADefineBlock) {
 // lsolid's −up. A label `@L` draws nothing and is left out.
 TEST(Cpfg, SetsTheHeadingAndThePositionOutright) {
   const Skeleton s = interpret(
-      cpfg("Lsystem: 1\nAxiom: @M(1,2,3)F@R(1,0,0)F@R(1,0,0,0,1,0)+(90)F"
-           "@L(\"%.f\", 2)\nendlsystem\n"));
+      kCpfg.parse("Lsystem: 1\nAxiom: @M(1,2,3)F@R(1,0,0)F@R(1,0,0,0,1,0)+(90)F"
+                  "@L(\"%.f\", 2)\nendlsystem\n"));
   ASSERT_EQ(s.segments.size(), 3U);
   EXPECT_EQ(s.segments[0].p0, glm::dvec3(1.0, -3.0, 2.0));
   EXPECT_NEAR(glm::length(direction_of(s.segments[1]) - glm::dvec3(1, 0, 0)),
               0.0, 1e-12);
   EXPECT_NEAR(glm::length(direction_of(s.segments[2]) - glm::dvec3(0, -1, 0)),
               0.0, 1e-12);
-  const Grammar g = cpfg("Lsystem: 1\nAxiom: F@L(\"x\")\n");
+  const Grammar g = kCpfg.parse("Lsystem: 1\nAxiom: F@L(\"x\")\n");
   EXPECT_EQ(g.warnings.back(),
             "'@L' (a label) is left out: it draws nothing in a solid");
 }
 
 TEST(Cpfg, RunsStartBlocksOnceAndStartEachBeforeEveryStepWithGlobals) {
-  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 3\n"
-                         "Start: {count = 0; length = 2;}\n"
-                         "StartEach: {count = count + 1;}\n"
-                         "End: {length = 5;}\n"
-                         "Axiom: A(0)\n"
-                         "A(x) --> F(length)A(count)\n"
-                         "endlsystem\n"),
+  EXPECT_EQ(kCpfg.derived("Lsystem: 1\nderivation length: 3\n"
+                          "Start: {count = 0; length = 2;}\n"
+                          "StartEach: {count = count + 1;}\n"
+                          "End: {length = 5;}\n"
+                          "Axiom: A(0)\n"
+                          "A(x) --> F(length)A(count)\n"
+                          "endlsystem\n"),
             "F(2)F(2)F(2)A(3)");
 }
 
 TEST(Cpfg, RunsStatementsBeforeAConditionAlwaysAndAfterItWhenItHolds) {
-  EXPECT_EQ(
-      derived_cpfg(std::string(kHead) +
-                   "Axiom: A(5)\n"
-                   "A(t) : {t = t - 2; half = t / 2;} t > 0 {twice = half * 4;}"
-                   " --> B(t, half, twice)\nendlsystem\n"),
-      "B(3,1.5,6)");
+  EXPECT_EQ(kCpfg.derived(
+                std::string(kHead) +
+                "Axiom: A(5)\n"
+                "A(t) : {t = t - 2; half = t / 2;} t > 0 {twice = half * 4;}"
+                " --> B(t, half, twice)\nendlsystem\n"),
+            "B(3,1.5,6)");
   // A rule whose condition fails leaves the parameters to the next one.
-  EXPECT_EQ(derived_cpfg(std::string(kHead) +
-                         "Axiom: A(5)\nA(t) : {t = t - 10;} t > 0 --> X\n"
-                         "A(t) --> Y(t)\nendlsystem\n"),
+  EXPECT_EQ(kCpfg.derived(std::string(kHead) +
+                          "Axiom: A(5)\nA(t) : {t = t - 10;} t > 0 --> X\n"
+                          "A(t) --> Y(t)\nendlsystem\n"),
             "Y(5)");
 }
 
 TEST(Cpfg, RunsTheStatementsOfAStochasticChoiceOnce) {
   // Both rules apply; the first always wins (the second weighs 0). Its
   // statements ran once, when the candidates were weighed.
-  EXPECT_EQ(derived_cpfg("Lsystem: 1\nseed: 3\nderivation length: 1\n"
-                         "Start: {c = 0;}\nAxiom: A\n"
-                         "A : {c = c + 1;} 1 --> B(c) : 1\n"
-                         "A --> C(c) : 0\nendlsystem\n"),
+  EXPECT_EQ(kCpfg.derived("Lsystem: 1\nseed: 3\nderivation length: 1\n"
+                          "Start: {c = 0;}\nAxiom: A\n"
+                          "A : {c = c + 1;} 1 --> B(c) : 1\n"
+                          "A --> C(c) : 0\nendlsystem\n"),
             "B(1)");
 }
 
 TEST(Cpfg, RunsStatementsInDecompositionAndHomomorphismRules) {
-  const Grammar g = cpfg(std::string(kHead) +
-                         "Axiom: A(1)\nA(t) --> A(t)\n"
-                         "decomposition\nA(t) : {t = t * 2;} 1 --> B(t)\n"
-                         "homomorphism\nB(t) : * {l = t + 1;} --> F(l)\n"
-                         "endlsystem\n");
+  const Grammar g =
+      kCpfg.parse(std::string(kHead) +
+                  "Axiom: A(1)\nA(t) --> A(t)\n"
+                  "decomposition\nA(t) : {t = t * 2;} 1 --> B(t)\n"
+                  "homomorphism\nB(t) : * {l = t + 1;} --> F(l)\n"
+                  "endlsystem\n");
   EXPECT_EQ(to_string(derive(g), g.alphabet), "B(2)");
   const Skeleton s = interpret(g);
   ASSERT_EQ(s.segments.size(), 1U);
@@ -573,75 +562,77 @@ TEST(Cpfg, RunsStatementsInDecompositionAndHomomorphismRules) {
 }
 
 TEST(Cpfg, ReadsLoopsBranchesTheConditionalOperatorAndCpfgsFunctions) {
-  EXPECT_EQ(derived_cpfg("Lsystem: 1\n"
-                         "Start: {s = 0; i = 0; while (i < 4) {s = s + i; "
-                         "i = i + 1;}\n"
-                         "  if (s == 6) {r = 1;} else {r = 2;}\n"
-                         "  do {i = i - 1;} while (i > 0);\n"
-                         "  printf(\"s=%f\\n\", s);}\n"
-                         "Axiom: A(s, r, i, 7 % 3, 1 < 2 ? 7 : 8, trunc(2.5), "
-                         "sign(-3), fabs(-2))\nendlsystem\n"),
+  EXPECT_EQ(kCpfg.derived("Lsystem: 1\n"
+                          "Start: {s = 0; i = 0; while (i < 4) {s = s + i; "
+                          "i = i + 1;}\n"
+                          "  if (s == 6) {r = 1;} else {r = 2;}\n"
+                          "  do {i = i - 1;} while (i > 0);\n"
+                          "  printf(\"s=%f\\n\", s);}\n"
+                          "Axiom: A(s, r, i, 7 % 3, 1 < 2 ? 7 : 8, trunc(2.5), "
+                          "sign(-3), fabs(-2))\nendlsystem\n"),
             "A(6,1,0,1,7,3,-1,2)");
 }
 
 TEST(Cpfg, DrawsRandomNumbersFromCpfgsGeneratorErand48) {
   // glibc's erand48 from cpfg's start {0x330E, 0, 0}: 0.17082803610628972,
   // then 0.74990198048496381; srand(21) starts it at {0x330E, 21, 0}.
-  const Grammar g = cpfg("Lsystem: 1\nAxiom: A(ran(1), ran(2))\nendlsystem\n");
+  const Grammar g =
+      kCpfg.parse("Lsystem: 1\nAxiom: A(ran(1), ran(2))\nendlsystem\n");
   const ModuleString s = derive(g);
   ASSERT_EQ(s.parameters(0).size(), 2U);
   EXPECT_DOUBLE_EQ(s.parameters(0)[0], 0.17082803610628972);
   EXPECT_DOUBLE_EQ(s.parameters(0)[1], 2 * 0.74990198048496381);
-  const Grammar seeded =
-      cpfg("Lsystem: 1\nStart: {srand(21);}\nAxiom: A(ran(1))\nendlsystem\n");
+  const Grammar seeded = kCpfg.parse(
+      "Lsystem: 1\nStart: {srand(21);}\nAxiom: A(ran(1))\nendlsystem\n");
   EXPECT_DOUBLE_EQ(derive(seeded).parameters(0)[0], 0.45767651808364818);
   // A seed with no integer (beyond 64 bits) starts from 0, as srand(0).
-  const Grammar huge = cpfg(
+  const Grammar huge = kCpfg.parse(
       "Lsystem: 1\nStart: {srand(1e300);}\nAxiom: A(ran(1))\nendlsystem\n");
-  const Grammar zero =
-      cpfg("Lsystem: 1\nStart: {srand(0);}\nAxiom: A(ran(1))\nendlsystem\n");
+  const Grammar zero = kCpfg.parse(
+      "Lsystem: 1\nStart: {srand(0);}\nAxiom: A(ran(1))\nendlsystem\n");
   EXPECT_DOUBLE_EQ(derive(huge).parameters(0)[0],
                    derive(zero).parameters(0)[0]);
   EXPECT_TRUE(g.uses_variables);
 }
 
 TEST(Cpfg, StopsALoopThatNeverEnds) {
-  const Grammar g =
-      cpfg("Lsystem: 1\nStart: {while (1) {x = 1;}}\nAxiom: A\nendlsystem\n");
+  const Grammar g = kCpfg.parse(
+      "Lsystem: 1\nStart: {while (1) {x = 1;}}\nAxiom: A\nendlsystem\n");
   EXPECT_EQ(located_error_of([&] { (void)derive(g); }),
             "2:9: a loop ran a million times; lsolid stops it");
 }
 
 TEST(Cpfg, HasNoLabelsSoAWordBeforeAColonIsAPredecessor) {
-  EXPECT_EQ(derived_cpfg("#define LEFT 1\n" + std::string(kHead) +
-                         "Axiom: A\nA : LEFT --> F\nendlsystem\n"),
+  EXPECT_EQ(kCpfg.derived("#define LEFT 1\n" + std::string(kHead) +
+                          "Axiom: A\nA : LEFT --> F\nendlsystem\n"),
             "F");
 }
 
 // cpfg's modules are single characters: `FA` is F then A, and a
 // predecessor of several modules replaces them all (generate.c).
 TEST(Cpfg, ReadsLettersAsModulesAndRewritesAPredecessorOfSeveral) {
-  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 2\n"
-                         "Axiom: FAFB\nFA --> FFA\n"),
+  EXPECT_EQ(kCpfg.derived("Lsystem: 1\nderivation length: 2\n"
+                          "Axiom: FAFB\nFA --> FFA\n"),
             "FFFAFB");
   // The modules must stand together; the parameters bind in order, then
   // the right context's.
-  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 1\n"
-                         "Axiom: A(1)B(2)C(3) A(4)[B(5)]C(6)\n"
-                         "A(x)B(y) > C(z) --> D(x+y+z)\n"),
+  EXPECT_EQ(kCpfg.derived("Lsystem: 1\nderivation length: 1\n"
+                          "Axiom: A(1)B(2)C(3) A(4)[B(5)]C(6)\n"
+                          "A(x)B(y) > C(z) --> D(x+y+z)\n"),
             "D(6)C(3)A(4)[B(5)]C(6)");
   const Grammar g =
-      cpfg("Lsystem: 1\nderivation length: 1\nAxiom: FA\nFA --> FFA\n");
+      kCpfg.parse("Lsystem: 1\nderivation length: 1\nAxiom: FA\nFA --> FFA\n");
   EXPECT_EQ(interpret(g).segments.size(), 2U);  // F F A
   // A homomorphism's predecessor of several letters is read as one name,
   // which rewrites the same where its letters stand together.
-  EXPECT_EQ(to_string(derive(cpfg("Lsystem: 1\nAxiom: Sl\nhomomorphism\n"
-                                  "Sl --> F\nendlsystem\n")),
-                      cpfg("Lsystem: 1\nAxiom: Sl\nhomomorphism\n"
-                           "Sl --> F\nendlsystem\n")
+  EXPECT_EQ(to_string(derive(kCpfg.parse("Lsystem: 1\nAxiom: Sl\nhomomorphism\n"
+                                         "Sl --> F\nendlsystem\n")),
+                      kCpfg
+                          .parse("Lsystem: 1\nAxiom: Sl\nhomomorphism\n"
+                                 "Sl --> F\nendlsystem\n")
                           .alphabet),
             "Sl");
-  EXPECT_EQ(cpfg_error("Lsystem: 1\nAxiom: A\nA * --> B\n"),
+  EXPECT_EQ(kCpfg.error("Lsystem: 1\nAxiom: A\nA * --> B\n"),
             "3:3: '*' matches any module only in a context");
 }
 
@@ -649,17 +640,17 @@ TEST(Cpfg, ReadsLettersAsModulesAndRewritesAPredecessorOfSeveral) {
 // skipright), so a context can look past a branch, or out of its own.
 TEST(Cpfg, SkipsToTheEndOfABranchForAnEqualsSignInARightContext) {
   // Past the first branch into the second.
-  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 1\n"
-                         "Axiom: F[+A][-D]\nF > [=][-D=] --> G\n"),
+  EXPECT_EQ(kCpfg.derived("Lsystem: 1\nderivation length: 1\n"
+                          "Axiom: F[+A][-D]\nF > [=][-D=] --> G\n"),
             "G[+A][-D]");
   // Out of the predecessor's branch: A then the end of its branch, then g.
-  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 1\n"
-                         "Axiom: [BAC[D]E]g [BA]h\nB > A=]g --> X\n"),
+  EXPECT_EQ(kCpfg.derived("Lsystem: 1\nderivation length: 1\n"
+                          "Axiom: [BAC[D]E]g [BA]h\nB > A=]g --> X\n"),
             "[XAC[D]E]g[BA]h");
   // The branch's modules bind, `=` binds nothing.
-  EXPECT_EQ(derived_cpfg("Lsystem: 1\nderivation length: 1\n"
-                         "Axiom: A(1)[B(2)C]B(3)\n"
-                         "A(x) > [B(y)=]B(z) --> A(x+y+z)\n"),
+  EXPECT_EQ(kCpfg.derived("Lsystem: 1\nderivation length: 1\n"
+                          "Axiom: A(1)[B(2)C]B(3)\n"
+                          "A(x) > [B(y)=]B(z) --> A(x+y+z)\n"),
             "A(6)[B(2)C]B(3)");
 }
 

@@ -12,6 +12,7 @@
 namespace lsys {
 namespace {
 
+using testing::expect_near;
 using testing::located_error_of;
 
 constexpr const char* kTwoSystems =
@@ -37,11 +38,6 @@ Skeleton drawn(std::string_view body, int n = 0) {
   Grammar g = fractint("S {\n" + std::string(body) + "\n}\n");
   g.settings.derivation_length = n;
   return interpret(g);
-}
-
-void expect_near(const glm::dvec3& actual, const glm::dvec3& expected) {
-  EXPECT_LT(glm::length(actual - expected), 1e-9)
-      << actual.x << ", " << actual.y << ", " << actual.z;
 }
 
 TEST(Fractint, ReadsTheSystemItIsToldWithoutRegardToCase) {

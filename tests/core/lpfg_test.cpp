@@ -18,14 +18,7 @@ namespace {
 
 using testing::located_error_of;
 
-Grammar lpfg(std::string_view text) {
-  return parse_grammar_text(text, {.dialect = Dialect::Lpfg}, "lsystem.l");
-}
-
-std::string derived_lpfg(std::string_view text) {
-  const Grammar g = lpfg(text);
-  return to_string(derive(g), g.alphabet);
-}
+constexpr testing::Notation kLpfg{Dialect::Lpfg, "lsystem.l"};
 
 constexpr std::string_view kHead =
     "#include <lpfgall.h>\n#include <math.h>\n#define ANGLE 45\n";
@@ -48,12 +41,12 @@ TEST(Lpfg, ReadsRulesWhoseBodiesProduceTheirSuccessors) {
       "I(x) : { produce I(2*x); }\n"
       "interpretation:\nA(v) : { produce IncColor() F(v); }\n"
       "I(x) : { produce F(x); }\n";
-  EXPECT_EQ(derived_lpfg(text),
+  EXPECT_EQ(kLpfg.derived(text),
             "SetWidth(3) I(2) SB Right(45) I(1) SB Right(45) A(1) EB SB "
             "Left(45) A(1) EB I(1)A(1) EB SB Left(45) I(1) SB Right(45) A(1) "
             "EB SB Left(45) A(1) EB I(1)A(1) EB I(2)I(1) SB Right(45) A(1) EB "
             "SB Left(45) A(1) EB I(1)A(1)");
-  EXPECT_EQ(interpret(lpfg(text)).segments.size(), 17U);
+  EXPECT_EQ(interpret(kLpfg.parse(text)).segments.size(), 17U);
 }
 
 // A body runs as C++: declarations, if/else, for, +=, ++, casts, float
@@ -61,31 +54,31 @@ TEST(Lpfg, ReadsRulesWhoseBodiesProduceTheirSuccessors) {
 // module to the next rule.
 TEST(Lpfg, RunsTheBodysStatementsInOrder) {
   EXPECT_EQ(
-      derived_lpfg(std::string(kHead) +
-                   "derivation length: 1;\nmodule A(int);\nmodule B(float, "
-                   "float);\nAxiom: A(3) A(7);\n"
-                   "A(n) : {\n  float sum = 0.5f, k;\n  int i;\n"
-                   "  for (i = 0; i < n; i++) { sum += i; }\n"
-                   "  k = (int)(sum / 2);\n  if (n > 5) produce B(sum, k);\n"
-                   "  nproduce B(0, 0);\n}\n"
-                   "A(n) : { produce B(-1, n); }\n"),
+      kLpfg.derived(std::string(kHead) +
+                    "derivation length: 1;\nmodule A(int);\nmodule B(float, "
+                    "float);\nAxiom: A(3) A(7);\n"
+                    "A(n) : {\n  float sum = 0.5f, k;\n  int i;\n"
+                    "  for (i = 0; i < n; i++) { sum += i; }\n"
+                    "  k = (int)(sum / 2);\n  if (n > 5) produce B(sum, k);\n"
+                    "  nproduce B(0, 0);\n}\n"
+                    "A(n) : { produce B(-1, n); }\n"),
       "B(-1,3)B(21.5,10)");
 }
 
 TEST(Lpfg, KeepsGlobalsAndRunsStartBlocks) {
-  EXPECT_EQ(derived_lpfg(std::string(kHead) +
-                         "int count;\nconst float step = 2;\n"
-                         "derivation length: 3;\nmodule A(float);\n"
-                         "Start: { count = 10; }\n"
-                         "StartEach: { count += 1; }\n"
-                         "Axiom: A(0);\n"
-                         "A(x) : produce A(count * step);\n"),
+  EXPECT_EQ(kLpfg.derived(std::string(kHead) +
+                          "int count;\nconst float step = 2;\n"
+                          "derivation length: 3;\nmodule A(float);\n"
+                          "Start: { count = 10; }\n"
+                          "StartEach: { count += 1; }\n"
+                          "Axiom: A(0);\n"
+                          "A(x) : produce A(count * step);\n"),
             "A(26)");
 }
 
 // lpfg gives decomposition and interpretation each their depth.
 TEST(Lpfg, KeepsTheInterpretationsOwnMaximumDepth) {
-  const Grammar g = lpfg(
+  const Grammar g = kLpfg.parse(
       "#include <lpfgall.h>\nderivation length: 0;\nmodule A(int);\n"
       "Axiom: A(0);\ndecomposition:\nmaximum depth: 1;\n"
       "interpretation:\nmaximum depth: 3;\n"
@@ -96,14 +89,14 @@ TEST(Lpfg, KeepsTheInterpretationsOwnMaximumDepth) {
 }
 
 TEST(Lpfg, ReadsFunctionsOfOneReturnAndTheirCalls) {
-  EXPECT_EQ(derived_lpfg(std::string(kHead) +
-                         "float half(float x) { return x / 2; }\n"
-                         "derivation length: 1;\nmodule A(float);\n"
-                         "Axiom: A(8);\nA(x) : { produce A(half(x) + "
-                         "pow(2, 3) + sin(M_PI / 2)); }\n"),
+  EXPECT_EQ(kLpfg.derived(std::string(kHead) +
+                          "float half(float x) { return x / 2; }\n"
+                          "derivation length: 1;\nmodule A(float);\n"
+                          "Axiom: A(8);\nA(x) : { produce A(half(x) + "
+                          "pow(2, 3) + sin(M_PI / 2)); }\n"),
             "A(13)");
   EXPECT_EQ(located_error_of([] {
-              (void)lpfg(
+              (void)kLpfg.parse(
                   "#include <lpfgall.h>\nfloat f(float x) { float y "
                   "= x; return y; }\nAxiom: F(1);\n");
             }),
@@ -114,7 +107,7 @@ TEST(Lpfg, ReadsFunctionsOfOneReturnAndTheirCalls) {
 // lpfg's turtle is cpfg's: the heading starts up, Left and Right turn,
 // Sphere and Circle take radii.
 TEST(Lpfg, DrawsWithLpfgsNamedModules) {
-  const Skeleton s = interpret(lpfg(
+  const Skeleton s = interpret(kLpfg.parse(
       "#include <lpfgall.h>\nAxiom: F(1) Left(90) F(2) SB() Right(90) F(1) "
       "EB() Sphere(0.5) Label(\"tip\");\n"));
   ASSERT_EQ(s.segments.size(), 3U);
@@ -129,7 +122,7 @@ TEST(Lpfg, DrawsWithLpfgsNamedModules) {
 
 TEST(Lpfg, RefusesWhatItCannotReadAtItsPlace) {
   EXPECT_EQ(located_error_of([] {
-              (void)lpfg(
+              (void)kLpfg.parse(
                   "#include <lpfgall.h>\nmodule A(int);\nAxiom: A(1);\n"
                   "A(n) : { switch (n) { case 1: produce A(2); } }\n");
             }),
@@ -137,30 +130,31 @@ TEST(Lpfg, RefusesWhatItCannotReadAtItsPlace) {
             "declarations, assignments, if, for, while, do, produce and "
             "nproduce (docs/dialects/lpfg.md)");
   EXPECT_EQ(located_error_of([] {
-              (void)lpfg("#include <lpfgall.h>\nAxiom: F(1) Foo(2);\n");
+              (void)kLpfg.parse("#include <lpfgall.h>\nAxiom: F(1) Foo(2);\n");
             }),
             "2:13: 'Foo' is not a module: declare it with 'module Foo(…);'");
+  EXPECT_EQ(
+      located_error_of([] {
+        (void)kLpfg.parse("#include <lpfgall.h>\nAxiom: Surface(0, 1);\n");
+      }),
+      "2:8: 'Surface' (a predefined surface) is not supported by "
+      "lsolid");
   EXPECT_EQ(located_error_of([] {
-              (void)lpfg("#include <lpfgall.h>\nAxiom: Surface(0, 1);\n");
-            }),
-            "2:8: 'Surface' (a predefined surface) is not supported by "
-            "lsolid");
-  EXPECT_EQ(located_error_of([] {
-              (void)lpfg(
+              (void)kLpfg.parse(
                   "#include <lpfgall.h>\nstruct D { float x; };\n"
                   "Axiom: F(1);\n");
             }),
             "2:1: 'struct D': a C++ type; lsolid reads modules of numbers "
             "only (docs/dialects/lpfg.md)");
   EXPECT_EQ(located_error_of([] {
-              (void)lpfg(
+              (void)kLpfg.parse(
                   "#include <lpfgall.h>\n#include <time.h>\n"
                   "FILE* fp;\nAxiom: F(1);\n");
             }),
             "3:1: 'FILE* fp': a variable of the C++ type 'FILE'; lsolid reads "
             "variables of numbers only (docs/dialects/lpfg.md)");
   EXPECT_EQ(located_error_of([] {
-              (void)lpfg(
+              (void)kLpfg.parse(
                   "#include <lpfgall.h>\n#include \"mine.h\"\n"
                   "Axiom: F(1);\n");
             }),

@@ -13,21 +13,15 @@
 namespace lsys {
 namespace {
 
+using testing::expect_near;
 using testing::located_error_of;
 
-Grammar lpy(std::string_view text, ParseOptions options = {}) {
-  options.dialect = Dialect::Lpy;
-  return parse_grammar_text(text, options, "plant.lpy");
-}
+constexpr testing::Notation kLpy{Dialect::Lpy, "plant.lpy"};
 
 Skeleton drawn(std::string_view axiom) {
-  return interpret(lpy("Axiom: " + std::string(axiom) +
-                       "\nderivation length: 0\nproduction:\nendlsystem\n"));
-}
-
-void expect_near(const glm::dvec3& actual, const glm::dvec3& expected) {
-  EXPECT_LT(glm::length(actual - expected), 1e-9)
-      << actual.x << ", " << actual.y << ", " << actual.z;
+  return interpret(
+      kLpy.parse("Axiom: " + std::string(axiom) +
+                 "\nderivation length: 0\nproduction:\nendlsystem\n"));
 }
 
 constexpr const char* kApex =
@@ -49,7 +43,7 @@ constexpr const char* kApex =
     "\tpass\n";
 
 TEST(Lpy, ReadsConstantsModulesAndRuleSections) {
-  const Grammar g = lpy(kApex);
+  const Grammar g = kLpy.parse(kApex);
   EXPECT_EQ(g.settings.derivation_length, 2);
   EXPECT_EQ(to_string(derive(g), g.alphabet), "F(2)F(0.5)F(0.25) Apex(0.25)");
   // G is not a turtle module in L-Py: the homomorphism's G draws nothing.
@@ -57,7 +51,7 @@ TEST(Lpy, ReadsConstantsModulesAndRuleSections) {
   ASSERT_EQ(s.segments.size(), 3U);
   expect_near(s.segments[2].p1, {0, 0, 2.75});
   // --define replaces a constant, as extern() parameters are replaced.
-  const Grammar defined = lpy(kApex, {.defines = {"dl=0.25"}});
+  const Grammar defined = kLpy.parse(kApex, {.defines = {"dl=0.25"}});
   EXPECT_EQ(to_string(derive(defined), defined.alphabet),
             "F(1.4142135623730951)F(0.25)F(0.0625) Apex(0.0625)");
 }
@@ -82,25 +76,25 @@ TEST(Lpy, TurnsBySixtyDegreesUnlessPythonSetsTheAngle) {
   const Skeleton sixty = drawn("F+F");
   const double r = std::acos(-1.0) / 3.0;
   expect_near(sixty.segments[1].p1, {-std::sin(r), 0, 1 + std::cos(r)});
-  const Skeleton ninety =
-      interpret(lpy("execContext().turtle.setAngleIncrement(90)\nAxiom: F+F\n"
-                    "derivation length: 0\nproduction:\nendlsystem\n"));
+  const Skeleton ninety = interpret(
+      kLpy.parse("execContext().turtle.setAngleIncrement(90)\nAxiom: F+F\n"
+                 "derivation length: 0\nproduction:\nendlsystem\n"));
   expect_near(ninety.segments[1].p1, {-1, 0, 1});
 }
 
 TEST(Lpy, DrawsAModuleAliasAsItsTarget) {
-  const Grammar g =
-      lpy("module A = F\nAxiom: A(1)\nderivation length: 5\nproduction:\n"
-          "A(x) --> A(x+1)\nendlsystem\n");
+  const Grammar g = kLpy.parse(
+      "module A = F\nAxiom: A(1)\nderivation length: 5\nproduction:\n"
+      "A(x) --> A(x+1)\nendlsystem\n");
   const Skeleton s = interpret(g);
   ASSERT_EQ(s.segments.size(), 1U);
   expect_near(s.segments[0].p1, {0, 0, 6});
 }
 
 TEST(Lpy, LeavesOutRulesOfGroupsOnlyPythonCanSelect) {
-  const Grammar g =
-      lpy("Axiom: A\nderivation length: 1\nproduction:\nA --> F\ngroup 1:\n"
-          "A --> FF\nendgroup\nendlsystem\n");
+  const Grammar g = kLpy.parse(
+      "Axiom: A\nderivation length: 1\nproduction:\nA --> F\ngroup 1:\n"
+      "A --> FF\nendgroup\nendlsystem\n");
   EXPECT_EQ(to_string(derive(g), g.alphabet), "F");
   ASSERT_EQ(g.warnings.size(), 1U);
   EXPECT_EQ(g.warnings[0],
@@ -114,12 +108,13 @@ TEST(Lpy, RefusesPythonItWouldHaveToRunAtItsLine) {
       "declarative part of L-Py (docs/dialects/lpy.md)";
   // An import is read; what the file uses of a module other than math and
   // random is refused where it is used, naming the module.
+  EXPECT_EQ(
+      located_error_of([] {
+        (void)kLpy.parse("import numpy\nAxiom: F\nproduction:\nendlsystem\n");
+      }),
+      "no error");
   EXPECT_EQ(located_error_of([] {
-              (void)lpy("import numpy\nAxiom: F\nproduction:\nendlsystem\n");
-            }),
-            "no error");
-  EXPECT_EQ(located_error_of([] {
-              (void)lpy(
+              (void)kLpy.parse(
                   "from copy import deepcopy\nimport numpy.random as "
                   "nr\nk = nr.uniform(0, 1)\nAxiom: F\nproduction:\n");
             }),
@@ -128,7 +123,7 @@ TEST(Lpy, RefusesPythonItWouldHaveToRunAtItsLine) {
   // A hook that reads the string L-Py passes it is refused; one that only
   // prints it is read.
   EXPECT_EQ(located_error_of([] {
-              (void)lpy(
+              (void)kLpy.parse(
                   "def EndEach(lstring):\n  x = len(lstring)\nAxiom: F\n"
                   "production:\n");
             }),
@@ -136,13 +131,13 @@ TEST(Lpy, RefusesPythonItWouldHaveToRunAtItsLine) {
             "passes it" +
                 tail);
   EXPECT_EQ(located_error_of([] {
-              (void)lpy(
+              (void)kLpy.parse(
                   "def EndEach(lstring):\n  print(lstring)\nAxiom: F\n"
                   "production:\n");
             }),
             "no error");
   EXPECT_EQ(located_error_of([] {
-              (void)lpy("def f(x):\n  y = x\n  return y\nAxiom: A\n");
+              (void)kLpy.parse("def f(x):\n  y = x\n  return y\nAxiom: A\n");
             }),
             "1:1: 'def f(x):'" + tail);
 }
@@ -155,12 +150,12 @@ TEST(Lpy, RefusesPythonItWouldHaveToRunAtItsLine) {
 // hook or body (lsolid draws from its own generator), one name with
 // several parameter counts, `choice` and `randrange`.
 TEST(Lpy, ReadsTuplesSeedsVaryingParameterCountsAndChoices) {
-  const Grammar g =
-      lpy("import random\nwidth = (0.01, 0.5)\ndef Start():\n  random.seed(3)\n"
-          "Axiom: S S(2)\nderivation length: 1\nproduction:\n"
-          "S --> T(width[1])\nS(x) :\n  random.seed(1)\n"
-          "  produce T(choice([-1, 1]), randrange(3), randrange(5, 7))\n"
-          "endlsystem\n");
+  const Grammar g = kLpy.parse(
+      "import random\nwidth = (0.01, 0.5)\ndef Start():\n  random.seed(3)\n"
+      "Axiom: S S(2)\nderivation length: 1\nproduction:\n"
+      "S --> T(width[1])\nS(x) :\n  random.seed(1)\n"
+      "  produce T(choice([-1, 1]), randrange(3), randrange(5, 7))\n"
+      "endlsystem\n");
   const ModuleString m = derive(g);
   ASSERT_EQ(m.size(), 2U);
   EXPECT_EQ(m.parameters(0)[0], 0.5);
@@ -172,7 +167,7 @@ TEST(Lpy, ReadsTuplesSeedsVaryingParameterCountsAndChoices) {
 }
 
 TEST(Lpy, ReadsFunctionsOfReturnsListsAssertsAndValuesInPredecessors) {
-  const Grammar g = lpy(
+  const Grammar g = kLpy.parse(
       "k = 2\nprint(k)\nassert 0 < k < 3, 'k'\ncolor = [1, 3, 2]\n"
       "def size(t):\n  \"\"\" the size \"\"\"\n  if t < k: return t * 10\n"
       "  elif t == k:\n    return -1\n  else:\n    return 100\n"
@@ -182,25 +177,26 @@ TEST(Lpy, ReadsFunctionsOfReturnsListsAssertsAndValuesInPredecessors) {
       "A(t) --> B(size(t), half(t))\nF(x)+F(y) --> G(x+y)\nendlsystem\n");
   EXPECT_EQ(to_string(derive(g), g.alphabet),
             "E(2,3)B(10,1)B(-1,1)B(100,1.5)G(3)");
-  EXPECT_EQ(to_string(derive(lpy("Axiom: D(1)\nderivation length: 1\n"
-                                 "production:\nD(0) --> E\nendlsystem\n")),
-                      g.alphabet),
-            "D(1)");
+  EXPECT_EQ(
+      to_string(derive(kLpy.parse("Axiom: D(1)\nderivation length: 1\n"
+                                  "production:\nD(0) --> E\nendlsystem\n")),
+                g.alphabet),
+      "D(1)");
   EXPECT_EQ(located_error_of([] {
-              (void)lpy("k = 4\nassert k < 3\nAxiom: F\nproduction:\n");
+              (void)kLpy.parse("k = 4\nassert k < 3\nAxiom: F\nproduction:\n");
             }),
             "2:8: this assertion fails: k < 3");
   EXPECT_EQ(located_error_of([] {
               (void)derive(
-                  lpy("c = [1, 2]\nAxiom: A(2)\nderivation length: 1\n"
-                      "production:\nA(i) --> B(c[i])\n"));
+                  kLpy.parse("c = [1, 2]\nAxiom: A(2)\nderivation length: 1\n"
+                             "production:\nA(i) --> B(c[i])\n"));
             }),
             "5:14: subscript 2 is out of range: this dimension of the array "
             "has 2 elements, 0 to 1");
-  const Grammar r =
-      lpy("from random import randint\nAxiom: A\nderivation length: 1\n"
-          "production:\nA --> B(randint(1, 3))B(randint(1, 3))B(randint(1, 3))"
-          "B(randint(1, 3))B(randint(1, 3))B(randint(1, 3))\nendlsystem\n");
+  const Grammar r = kLpy.parse(
+      "from random import randint\nAxiom: A\nderivation length: 1\n"
+      "production:\nA --> B(randint(1, 3))B(randint(1, 3))B(randint(1, 3))"
+      "B(randint(1, 3))B(randint(1, 3))B(randint(1, 3))\nendlsystem\n");
   const ModuleString drawn = derive(r);
   ASSERT_EQ(drawn.size(), 6U);
   for (std::size_t i = 0; i < drawn.size(); ++i) {
@@ -214,8 +210,8 @@ TEST(Lpy, ReadsFunctionsOfReturnsListsAssertsAndValuesInPredecessors) {
 TEST(Lpy, RunsRuleBodiesOfAssignmentsConditionsAndProduce) {
   const auto derived = [](std::string_view rules, int n) {
     const Grammar g =
-        lpy("Axiom: A(0)\nderivation length: " + std::to_string(n) +
-            "\nproduction:\n" + std::string(rules) + "endlsystem\n");
+        kLpy.parse("Axiom: A(0)\nderivation length: " + std::to_string(n) +
+                   "\nproduction:\n" + std::string(rules) + "endlsystem\n");
     return to_string(derive(g), g.alphabet);
   };
   EXPECT_EQ(derived("A(x) :\n  if x < 2:\n    produce F A(x+1)\n"
@@ -246,7 +242,7 @@ TEST(Lpy, RunsRuleBodiesOfAssignmentsConditionsAndProduce) {
                     1),
             "B(0,1,1,0)");
   EXPECT_EQ(located_error_of([] {
-              (void)lpy(
+              (void)kLpy.parse(
                   "Axiom: A(1)\nproduction:\nA(x) :\n"
                   "  produce B(x ^ 2)\nendlsystem\n");
             }),
@@ -257,29 +253,30 @@ TEST(Lpy, RunsRuleBodiesOfAssignmentsConditionsAndProduce) {
 // L-Py's hooks run as cpfg's Start: and its kin; what they assign is
 // global, and rule bodies read and change it.
 TEST(Lpy, RunsTheHooksStartAndStartEachWithGlobalVariables) {
-  const Grammar g =
-      lpy("def Start():\n  global m\n  print('Start')\n  m = 10\n"
-          "def StartEach():\n  global m\n  m += 1\n"
-          "Axiom: A\nderivation length: 3\nproduction:\n"
-          "A :\n  global m\n  produce B(m) A\nendlsystem\n");
+  const Grammar g = kLpy.parse(
+      "def Start():\n  global m\n  print('Start')\n  m = 10\n"
+      "def StartEach():\n  global m\n  m += 1\n"
+      "Axiom: A\nderivation length: 3\nproduction:\n"
+      "A :\n  global m\n  produce B(m) A\nendlsystem\n");
   EXPECT_EQ(to_string(derive(g), g.alphabet), "B(11)B(12)B(13)A");
   // Without `global`, a rule's assignment makes a local, as in Python.
-  const Grammar local =
-      lpy("def Start():\n  global m\n  m = 10\n"
-          "Axiom: AD\nderivation length: 1\nproduction:\n"
-          "A :\n  m = 5\n  produce B(m)\nD :\n  produce C(m)\nendlsystem\n");
+  const Grammar local = kLpy.parse(
+      "def Start():\n  global m\n  m = 10\n"
+      "Axiom: AD\nderivation length: 1\nproduction:\n"
+      "A :\n  m = 5\n  produce B(m)\nD :\n  produce C(m)\nendlsystem\n");
   EXPECT_EQ(to_string(derive(local), local.alphabet), "B(5)C(10)");
-  EXPECT_EQ(located_error_of(
-                [] { (void)lpy("def Start():\n  produce A\nAxiom: A\n"); }),
+  EXPECT_EQ(located_error_of([] {
+              (void)kLpy.parse("def Start():\n  produce A\nAxiom: A\n");
+            }),
             "2:3: 'produce' outside a rule");
 }
 
 // PlantGL's turtle starts heading +Z with left (0, −1, 0) and up
 // (1, 0, 0): queries answer in its coordinates.
 TEST(Lpy, AnswersQueriesInPlantGLsCoordinates) {
-  const Grammar g =
-      lpy("Axiom: F+(90)F?P(0,0,0)?H(0,0,0)?L(0,0,0)?U(0,0,0)\n"
-          "derivation length: 1\nproduction:\nendlsystem\n");
+  const Grammar g = kLpy.parse(
+      "Axiom: F+(90)F?P(0,0,0)?H(0,0,0)?L(0,0,0)?U(0,0,0)\n"
+      "derivation length: 1\nproduction:\nendlsystem\n");
   EXPECT_EQ(to_string(derive(g), g.alphabet),
             "F+(90)F ?P(0,-1,1) ?H(0,-1,0) ?L(0,0,-1) ?U(1,0,0)");
 }
@@ -288,7 +285,7 @@ TEST(Lpy, AnswersQueriesInPlantGLsCoordinates) {
 // parameters bound to the arguments; it sees constants, not the rule's
 // names. Modules imported under another name are read through it.
 TEST(Lpy, CompilesFunctionsOfOneReturnWhereTheyAreCalled) {
-  const Grammar g = lpy(
+  const Grammar g = kLpy.parse(
       "import math as m\nk = 3\ndef alpha(x):\n  return 30 - k*x  # deg\n"
       "def twice(a, b): return alpha(a) * 2 + b\n"
       "Axiom: A(2)\nderivation length: 1\nproduction:\n"
@@ -296,15 +293,15 @@ TEST(Lpy, CompilesFunctionsOfOneReturnWhereTheyAreCalled) {
       "endlsystem\n");
   EXPECT_EQ(to_string(derive(g), g.alphabet), "B(24,56,2)");
   EXPECT_EQ(located_error_of([] {
-              (void)lpy("def f(x):\n  y = x\n  return y\nAxiom: A\n");
+              (void)kLpy.parse("def f(x):\n  y = x\n  return y\nAxiom: A\n");
             }),
             "1:1: 'def f(x):': this is Python code, and lsolid does not run "
             "Python; it reads the declarative part of L-Py "
             "(docs/dialects/lpy.md)");
   EXPECT_EQ(located_error_of([] {
               (void)derive(
-                  lpy("def f(x): return y\nAxiom: A(1)\n"
-                      "production:\nA(y) --> B(f(y))\n"));
+                  kLpy.parse("def f(x): return y\nAxiom: A(1)\n"
+                             "production:\nA(y) --> B(f(y))\n"));
             }),
             "1:18: undefined name 'y'");
 }
@@ -313,10 +310,10 @@ TEST(Lpy, CompilesFunctionsOfOneReturnWhereTheyAreCalled) {
 // not select undoes that run's draws, so the next production draws the same
 // numbers and every module is rewritten by exactly one of them.
 TEST(Lpy, RunsARandomBodyOncePerModule) {
-  const Grammar g = lpy("Axiom: " + std::string(64, 'A') +
-                        "\nderivation length: 1\nproduction:\n"
-                        "A :\n  if random() < 0.5: produce B\n"
-                        "  else: produce C\nendlsystem\n");
+  const Grammar g = kLpy.parse("Axiom: " + std::string(64, 'A') +
+                               "\nderivation length: 1\nproduction:\n"
+                               "A :\n  if random() < 0.5: produce B\n"
+                               "  else: produce C\nendlsystem\n");
   const std::string s = to_string(derive(g), g.alphabet);
   EXPECT_EQ(s.size(), 64U);
   EXPECT_EQ(std::count(s.begin(), s.end(), 'A'), 0);
@@ -327,8 +324,8 @@ TEST(Lpy, RunsARandomBodyOncePerModule) {
 TEST(Lpy, RefusesPythonARuleBodyCannotRunAtItsPlace) {
   const auto error = [](std::string_view body) {
     return located_error_of([&] {
-      (void)lpy("Axiom: A\nproduction:\nA :\n" + std::string(body) +
-                "endlsystem\n");
+      (void)kLpy.parse("Axiom: A\nproduction:\nA :\n" + std::string(body) +
+                       "endlsystem\n");
     });
   };
   const std::string tail =
@@ -352,9 +349,9 @@ TEST(Lpy, RefusesPythonARuleBodyCannotRunAtItsPlace) {
 // and branches, and a branch one piece opens another may close.
 TEST(Lpy, BuildsASuccessorAsTheBodyRunsWithNproduceAndLoops) {
   const auto derived = [](std::string_view axiom, std::string_view rules) {
-    const Grammar g = lpy("Axiom: " + std::string(axiom) +
-                          "\nderivation length: 1\nproduction:\n" +
-                          std::string(rules) + "endlsystem\n");
+    const Grammar g = kLpy.parse("Axiom: " + std::string(axiom) +
+                                 "\nderivation length: 1\nproduction:\n" +
+                                 std::string(rules) + "endlsystem\n");
     return to_string(derive(g), g.alphabet);
   };
   EXPECT_EQ(derived("A(4)",
@@ -388,14 +385,14 @@ TEST(Lpy, BuildsASuccessorAsTheBodyRunsWithNproduceAndLoops) {
 // `Axiom:` above a Python body: the body produces the axiom (L-Py's
 // tutorial of Fibonacci numbers passed along a row of modules).
 TEST(Lpy, RunsAnAxiomWrittenAsPython) {
-  const Grammar g =
-      lpy("nbValues = 5\nAxiom: \n  nproduce -(90)\n"
-          "  for i in range(nbValues):\n    nproduce I(1)\n\n"
-          "derivation length: 3\nproduction:\n"
-          "I(j)I(k) < I(i) --> I(k+j)\nendlsystem\n");
+  const Grammar g = kLpy.parse(
+      "nbValues = 5\nAxiom: \n  nproduce -(90)\n"
+      "  for i in range(nbValues):\n    nproduce I(1)\n\n"
+      "derivation length: 3\nproduction:\n"
+      "I(j)I(k) < I(i) --> I(k+j)\nendlsystem\n");
   EXPECT_EQ(to_string(derive(g), g.alphabet), "-(90)I(1)I(1)I(2)I(3)I(5)");
   EXPECT_EQ(located_error_of([] {
-              (void)lpy("Axiom:\n  x = 1\nproduction:\nendlsystem\n");
+              (void)kLpy.parse("Axiom:\n  x = 1\nproduction:\nendlsystem\n");
             }),
             "1:1: an axiom built by Python statements without 'nproduce' or "
             "'produce': this is Python code, and lsolid does not run Python; "
@@ -403,10 +400,10 @@ TEST(Lpy, RunsAnAxiomWrittenAsPython) {
 }
 
 TEST(Lpy, KnowsTheStepNumberAndPythonsIntRoundAndFloat) {
-  const Grammar g =
-      lpy("Axiom: A\nderivation length: int(3.9)\nproduction:\n"
-          "A :\n  produce B(getIterationNb(), int(-2.7), round(2.5), "
-          "round(3.5), float(2)) A\nendlsystem\n");
+  const Grammar g = kLpy.parse(
+      "Axiom: A\nderivation length: int(3.9)\nproduction:\n"
+      "A :\n  produce B(getIterationNb(), int(-2.7), round(2.5), "
+      "round(3.5), float(2)) A\nendlsystem\n");
   EXPECT_EQ(to_string(derive(g), g.alphabet),
             "B(0,-2,2,4,2)B(1,-2,2,4,2)B(2,-2,2,4,2)A");
 }
@@ -457,9 +454,9 @@ TEST(Lpy, DrawsPlantGLsPredefinedLeaf) {
 // A label draws nothing in a solid: left out, its Python string unread,
 // with a warning.
 TEST(Lpy, LeavesOutLabelsWithAWarning) {
-  const Grammar g =
-      lpy("Axiom: F@L(\"a (b)\")F Label(str(3))\nderivation length: 0\n"
-          "production:\nendlsystem\n");
+  const Grammar g = kLpy.parse(
+      "Axiom: F@L(\"a (b)\")F Label(str(3))\nderivation length: 0\n"
+      "production:\nendlsystem\n");
   EXPECT_EQ(interpret(g).segments.size(), 2U);
   ASSERT_EQ(g.warnings.size(), 2U);
   EXPECT_EQ(g.warnings[0],
@@ -469,7 +466,7 @@ TEST(Lpy, LeavesOutLabelsWithAWarning) {
 // The editor's scalars are constants, as L-Py sets them in the context;
 // the file's own assignment of the same name stays.
 TEST(Lpy, ReadsTheEditorsScalarsAsConstants) {
-  const Grammar g = lpy(
+  const Grammar g = kLpy.parse(
       "n = 2\nAxiom: F(size)\nderivation length: n\nproduction:\n"
       "endlsystem\n###### INITIALISATION ######\n"
       "def __initialiseContext__(context):\n"
@@ -521,23 +518,24 @@ TEST(Lpy, TakesAnglesInRadiansInExpressionsAsPythonsMathDoes) {
 
 TEST(Lpy, TakesTheTurtlesSettingsFromTheEditorsBlock) {
   const Skeleton s = interpret(
-      lpy("Axiom: F+F\nderivation length: 0\nproduction:\nendlsystem\n"
-          "###### INITIALISATION ######\n"
-          "def __initialiseContext__(context):\n"
-          "\tcontext.turtle.setAngleIncrement(90)\n"));
+      kLpy.parse("Axiom: F+F\nderivation length: 0\nproduction:\nendlsystem\n"
+                 "###### INITIALISATION ######\n"
+                 "def __initialiseContext__(context):\n"
+                 "\tcontext.turtle.setAngleIncrement(90)\n"));
   ASSERT_EQ(s.segments.size(), 2U);
   expect_near(s.segments[1].p1, {-1, 0, 1});
 }
 
 TEST(Lpy, ReadsRangeEnumerationsAndLambdasAsConstantsAndFunctions) {
-  const Grammar g =
-      lpy("Forward, Backward, Growth = range(3)\n"
-          "width = lambda order, k : 10. / (order + 1) + k\n"
-          "Axiom: A(Growth)\nderivation length: 1\nproduction:\n"
-          "A(x) --> F(width(x, Backward))\nendlsystem\n");
+  const Grammar g = kLpy.parse(
+      "Forward, Backward, Growth = range(3)\n"
+      "width = lambda order, k : 10. / (order + 1) + k\n"
+      "Axiom: A(Growth)\nderivation length: 1\nproduction:\n"
+      "A(x) --> F(width(x, Backward))\nendlsystem\n");
   EXPECT_EQ(to_string(derive(g), g.alphabet), "F(4.333333333333334)");
-  EXPECT_EQ(located_error_of([] { (void)lpy("A, B = range(3)\nAxiom: F\n"); }),
-            "1:8: range(3) gives 3 values to 2 names");
+  EXPECT_EQ(
+      located_error_of([] { (void)kLpy.parse("A, B = range(3)\nAxiom: F\n"); }),
+      "1:8: range(3) gives 3 values to 2 names");
 }
 
 }  // namespace

@@ -69,6 +69,36 @@ inline std::string located_error(std::string_view text) {
   return located_error_of([&] { (void)parse(text); });
 }
 
+/// A notation lsolid reads, with the name its files carry, for the tests of
+/// its front end: parse, derive and refuse text as that notation.
+struct Notation {
+  Dialect dialect = Dialect::Ls;
+  const char* file = "test.ls";
+
+  /// The text parsed as a file of this notation.
+  [[nodiscard]] Grammar parse(std::string_view text,
+                              ParseOptions options = {}) const {
+    options.dialect = dialect;
+    return parse_grammar_text(text, options, file);
+  }
+  /// The text's derived string (the file's n).
+  [[nodiscard]] std::string derived(std::string_view text) const {
+    const Grammar g = parse(text);
+    return to_string(derive(g), g.alphabet);
+  }
+  /// `line:column: message` of the error parsing the text raises, or "no
+  /// error".
+  [[nodiscard]] std::string error(std::string_view text) const {
+    return located_error_of([&] { (void)parse(text); });
+  }
+};
+
+/// Expects two points to agree to 10⁻⁹.
+inline void expect_near(const glm::dvec3& actual, const glm::dvec3& expected) {
+  EXPECT_LT(glm::length(actual - expected), 1e-9)
+      << actual.x << ", " << actual.y << ", " << actual.z;
+}
+
 /// Expects `disc` to be the polygon of a disc of `diameter` about `center`
 /// across `normal` (a unit vector): its corners in that plane, all at the
 /// same distance, whose sides touch the circle.

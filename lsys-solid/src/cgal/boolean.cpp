@@ -30,6 +30,7 @@
 #include <unordered_map>
 
 #include "conversion.hpp"
+#include "golden.hpp"
 #include "lsolid/errors.hpp"
 #include "lsolid/rounding.hpp"
 
@@ -38,10 +39,12 @@ namespace {
 
 constexpr double kPerturbationMm = 1e-5;
 // The direction of that shift: along no axis or diagonal, so that it moves
-// off the coincidences that lattice-like models make. It is the golden
-// section to three digits (kGolden); the digits stay as they are, since
-// every union that needed a retry was built and checked with them.
-constexpr std::array<double, 3> kShift{1.0, 0.618, 0.382};
+// off the coincidences that lattice-like models make: (1, φ', 1 − φ') with
+// the golden section φ' = kGolden to three digits, 0.618 (the digits every
+// union that needed a retry was built and checked with).
+constexpr double kShiftGolden =
+    static_cast<int>(kGolden * 1000.0 + 0.5) / 1000.0;
+constexpr std::array<double, 3> kShift{1.0, kShiftGolden, 1.0 - kShiftGolden};
 constexpr int kAttempts = 3;
 constexpr double kMendVolumeSlack = 1e-6;
 

@@ -8,11 +8,7 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
-#include <charconv>
 #include <cmath>
-#include <numbers>
-#include <optional>
 #include <string_view>
 
 #include "expressions/c_statements.hpp"
@@ -29,16 +25,13 @@ namespace lsys {
 using expressions::apply;
 using expressions::arity;
 using expressions::beta;
-using expressions::CStatementCompiler;
 using expressions::erand48;
-using expressions::ExpressionCompiler;
 using expressions::is_random;
 using expressions::kMaxStack;
 using expressions::normal;
 using expressions::python_colon;
 using expressions::python_lines;
 using expressions::PythonLine;
-using expressions::PythonStatementCompiler;
 using expressions::starts_word;
 using Op = Expression::Op;
 using Instruction = Expression::Instruction;

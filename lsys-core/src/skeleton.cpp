@@ -2,16 +2,11 @@
 // SPDX-License-Identifier: MIT
 #include "lsys/skeleton.hpp"
 
-#include <glm/common.hpp>
-
 namespace lsys {
 
 Bounds bounds(const Skeleton& skeleton) {
   Bounds box;
-  const auto grow = [&](const glm::dvec3& p) {
-    box.min = glm::min(box.min, p);
-    box.max = glm::max(box.max, p);
-  };
+  const auto grow = [&](const glm::dvec3& p) { box.add(p); };
   for (const Segment& s : skeleton.segments) {
     grow(s.p0);
     grow(s.p1);

@@ -10,7 +10,6 @@
 #include "commands.hpp"
 #include "json.hpp"
 #include "lsolid/distance.hpp"
-#include "lsolid/errors.hpp"
 #include "lsolid/mesh_io.hpp"
 #include "lsolid/validate.hpp"
 #include "lsys/diagnostic.hpp"
@@ -23,27 +22,25 @@ Json json_report(const ValidationReport& r) {
   const auto known = [](bool is_known, auto value) {
     return is_known ? Json(value) : Json(nullptr);
   };
-  return Json{
-      {"printable", r.is_printable()},
-      {"triangles", r.triangles},
-      {"vertices", r.vertices},
-      {"closed", r.boundary_edges == 0},
-      {"boundary_edges", r.boundary_edges},
-      {"non_manifold_edges", r.non_manifold_edges},
-      {"non_manifold_vertices", r.non_manifold_vertices},
-      {"misoriented_edges", r.misoriented_edges},
-      {"outward", known(r.orientation_checked, r.is_outward)},
-      {"degenerate_faces", r.degenerate_faces},
-      {"self_intersecting_pairs",
-       known(r.self_intersections_checked, r.self_intersecting_pairs)},
-      {"shells", r.shells},
-      {"pieces", r.pieces()},
-      {"loose_pieces", json_loose_pieces(r)},
-      {"genus", known(r.genus >= 0, r.genus)},
-      {"volume_mm3", r.volume_mm3},
-      {"bounds",
-       {{"min", json_point(r.bounds.min)}, {"max", json_point(r.bounds.max)}}},
-      {"problems", r.problems()}};
+  return Json{{"printable", r.is_printable()},
+              {"triangles", r.triangles},
+              {"vertices", r.vertices},
+              {"closed", r.boundary_edges == 0},
+              {"boundary_edges", r.boundary_edges},
+              {"non_manifold_edges", r.non_manifold_edges},
+              {"non_manifold_vertices", r.non_manifold_vertices},
+              {"misoriented_edges", r.misoriented_edges},
+              {"outward", known(r.orientation_checked, r.is_outward)},
+              {"degenerate_faces", r.degenerate_faces},
+              {"self_intersecting_pairs",
+               known(r.self_intersections_checked, r.self_intersecting_pairs)},
+              {"shells", r.shells},
+              {"pieces", r.pieces()},
+              {"loose_pieces", json_loose_pieces(r)},
+              {"genus", known(r.genus >= 0, r.genus)},
+              {"volume_mm3", r.volume_mm3},
+              {"bounds", json_box(r.bounds)},
+              {"problems", r.problems()}};
 }
 
 // `in_pieces`: --one-piece was asked for and the mesh is not one piece.
@@ -162,7 +159,7 @@ bool check_volumes(const CheckCommand& command,
 bool run_check(const CheckCommand& command) {
   const std::vector<ColoredMesh> volumes = read_colored(command.file);
   // A file without a triangle is nothing to check, not a printable (or an
-  // unprintable) mesh with bounds of -1e300.
+  // unprintable) mesh with empty bounds.
   std::size_t triangles = 0;
   for (const ColoredMesh& v : volumes) triangles += v.mesh.triangles.size();
   if (triangles == 0) {

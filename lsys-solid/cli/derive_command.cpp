@@ -170,7 +170,6 @@ std::uint64_t parse_whole_number(const std::string& text,
 }
 
 lsys::DerivationOptions derivation_options(const GrammarInput& input) {
-  constexpr std::uint64_t kMostLimit = lsys::kMaxWholeNumber;
   lsys::DerivationOptions options;
   if (input.derivation_length) {
     options.derivation_length = static_cast<int>(
@@ -178,15 +177,16 @@ lsys::DerivationOptions derivation_options(const GrammarInput& input) {
                            lsys::kMaxDerivationLength));
   }
   if (input.seed) {
-    options.seed = parse_whole_number(*input.seed, "--seed", 0, kMostLimit);
+    options.seed =
+        parse_whole_number(*input.seed, "--seed", 0, lsys::kMaxWholeNumber);
   }
   if (input.max_segments) {
-    options.max_segments = parse_whole_number(*input.max_segments,
-                                              "--max-segments", 1, kMostLimit);
+    options.max_segments = parse_whole_number(
+        *input.max_segments, "--max-segments", 1, lsys::kMaxWholeNumber);
   }
   if (input.max_modules) {
-    options.max_modules =
-        parse_whole_number(*input.max_modules, "--max-modules", 1, kMostLimit);
+    options.max_modules = parse_whole_number(
+        *input.max_modules, "--max-modules", 1, lsys::kMaxWholeNumber);
   }
   if (input.max_memory) {
     options.max_memory_bytes =

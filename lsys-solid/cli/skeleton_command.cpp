@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <glm/common.hpp>
-#include <limits>
 
 #include "commands.hpp"
 #include "lsolid/scale.hpp"

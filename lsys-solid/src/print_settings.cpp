@@ -137,24 +137,23 @@ PrintSettings resolve_print_settings(const lsys::Grammar& grammar,
       if (s.key == "scale") file.scale_mm_per_unit = mm;
     }
   }
-  const PrintOverrides& given = command_line;
-  const bool sets_size =
-      given.height_mm || given.size_mm || given.scale_mm_per_unit;
+  const bool sets_size = command_line.height_mm || command_line.size_mm ||
+                         command_line.scale_mm_per_unit;
   if (sizes > 1 && !sets_size) {
     throw lsys::error_at(*grammar.source, second_size,
                          "give one of height, size and scale, not several");
   }
   PrintSettings out = file;
   if (sets_size) {
-    out.height_mm = given.height_mm;
-    out.size_mm = given.size_mm;
-    out.scale_mm_per_unit = given.scale_mm_per_unit;
+    out.height_mm = command_line.height_mm;
+    out.size_mm = command_line.size_mm;
+    out.scale_mm_per_unit = command_line.scale_mm_per_unit;
   }
-  out.wall_mm = given.wall_mm.value_or(out.wall_mm);
-  out.tolerance_mm = given.tolerance_mm.value_or(out.tolerance_mm);
-  out.base = given.base.value_or(out.base);
-  out.profile = given.profile.value_or(out.profile);
-  if (given.colors) out.colors = *given.colors;
+  out.wall_mm = command_line.wall_mm.value_or(out.wall_mm);
+  out.tolerance_mm = command_line.tolerance_mm.value_or(out.tolerance_mm);
+  out.base = command_line.base.value_or(out.base);
+  out.profile = command_line.profile.value_or(out.profile);
+  if (command_line.colors) out.colors = *command_line.colors;
   return out;
 }
 

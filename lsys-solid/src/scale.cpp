@@ -83,9 +83,8 @@ double estimate_scale(const lsys::Skeleton& skeleton,
   return scale;
 }
 
-ScaledSkeleton scale_skeleton(const lsys::Skeleton& skeleton,
-                              double mm_per_unit, double wall_mm) {
-  const double scale = mm_per_unit;
+ScaledSkeleton scale_skeleton(const lsys::Skeleton& skeleton, double scale,
+                              double wall_mm) {
   ScaledSkeleton out{skeleton, scale};
   for (lsys::Segment& seg : out.skeleton.segments) {
     seg.p0 *= scale;

@@ -14,6 +14,7 @@
 #include <set>
 #include <string_view>
 
+#include "flat_model.hpp"
 #include "lsolid/boolean.hpp"
 #include "lsolid/colors.hpp"
 #include "lsolid/containment.hpp"
@@ -28,6 +29,7 @@
 #include "lsolid/scale.hpp"
 #include "lsolid/validate.hpp"
 #include "lsys/diagnostic.hpp"
+#include "union_checks.hpp"
 
 namespace lsolid {
 namespace {
@@ -146,138 +148,6 @@ void cut_underside(TriangleMesh& mesh, Placement& placement,
   report.cavities_filled += cut->cavities_filled;
 }
 
-// How far below a part's surface a witness must lie to be required inside
-// the rounded union: rounding moves points by far less (slivers under
-// 1e-4 mm are collapsed).
-constexpr double kRoundingDepthMm = 1e-3;
-// The union's volume may fall short of its largest part's by rounding only.
-constexpr double kVolumeSlack = 1e-5;
-
-// What the union must keep of its parts (see containment.hpp).
-struct PartsKept {
-  std::vector<Witness> witnesses;
-  std::vector<std::string> labels;
-  double largest_mm3 = 0.0;
-  std::string largest;
-};
-
-PartsKept parts_kept(const std::vector<Part>& parts) {
-  PartsKept kept{.witnesses = witnesses(parts)};
-  for (const Part& part : parts) {
-    kept.labels.push_back(part.label);
-    const double volume = signed_volume(part.mesh);
-    if (volume > kept.largest_mm3) {
-      kept.largest_mm3 = volume;
-      kept.largest = part.label;
-    }
-  }
-  return kept;
-}
-
-// The parts that `outside` names, for a message.
-std::string lost_parts(const std::vector<Witness>& outside,
-                       const PartsKept& kept) {
-  std::vector<std::size_t> parts;
-  for (const Witness& w : outside) {
-    if (std::find(parts.begin(), parts.end(), w.part) == parts.end()) {
-      parts.push_back(w.part);
-    }
-  }
-  std::string out;
-  const std::size_t shown = std::min<std::size_t>(parts.size(), 3);
-  for (std::size_t i = 0; i < shown; ++i) {
-    const auto w =
-        std::find_if(outside.begin(), outside.end(),
-                     [&](const Witness& x) { return x.part == parts[i]; });
-    out += fmt::format(
-        "{}{} (the point ({:.3f}, {:.3f}, {:.3f}) mm, {:.2f} mm "
-        "inside it, is outside the result)",
-        i == 0 ? "" : "; ", kept.labels[parts[i]], w->point.x, w->point.y,
-        w->point.z, w->depth_mm);
-  }
-  if (parts.size() > shown) {
-    out += fmt::format(" and {} more parts", parts.size() - shown);
-  }
-  return out;
-}
-
-// The union's invariant, checked on the rounded union before anything is
-// cut off or decimated: every part's witnesses lie inside it, and it holds
-// at least the largest part's volume. A union that lost geometry is an
-// error, never a printable model.
-// @throws GeometryError naming the parts lost.
-// Every witness at least kRoundingDepthMm deep lies inside `mesh`, and
-// every piece of it holds one; `what` names the result ("the union") and
-// `advice` ends the message. Counts the witnesses checked into `report`.
-// @throws GeometryError naming the parts lost, or the largest fragment.
-void check_witnesses(const TriangleMesh& mesh,
-                     const std::vector<Witness>& witnesses,
-                     const PartsKept& kept, std::string_view what,
-                     std::string_view advice, SolidReport& report) {
-  const std::vector<Witness> outside =
-      witnesses_outside(mesh, witnesses, kRoundingDepthMm);
-  report.witnesses_checked = static_cast<std::size_t>(std::count_if(
-      witnesses.begin(), witnesses.end(),
-      [](const Witness& w) { return w.depth_mm >= kRoundingDepthMm; }));
-  if (!outside.empty()) {
-    throw GeometryError(fmt::format(
-        "{} lost part of the model (a bug in lsolid; please report it with "
-        "this file{}): {}",
-        what, advice, lost_parts(outside, kept)));
-  }
-  const std::vector<Shell> fragments =
-      unaccounted_pieces(mesh, witnesses, kRoundingDepthMm);
-  if (!fragments.empty()) {
-    const glm::dvec3 at =
-        (fragments.front().bounds.min + fragments.front().bounds.max) / 2.0;
-    throw GeometryError(fmt::format(
-        "the repair of {} left {} loose fragment{} that no part accounts for "
-        "(a bug in lsolid; please report it with this file{}): the largest "
-        "{:.3g} mm³ around ({:.3f}, {:.3f}, {:.3f}) mm",
-        what, fragments.size(), fragments.size() == 1 ? "" : "s", advice,
-        fragments.front().volume_mm3, at.x, at.y, at.z));
-  }
-}
-
-void check_union_kept(const TriangleMesh& mesh, const PartsKept& kept,
-                      SolidReport& report) {
-  check_witnesses(mesh, kept.witnesses, kept, "the union", "", report);
-  const double volume = signed_volume(mesh);
-  if (volume < kept.largest_mm3 * (1.0 - kVolumeSlack)) {
-    throw GeometryError(fmt::format(
-        "the union lost part of the model (a bug in lsolid; please report it "
-        "with this file): its volume, {:.3f} mm³, is less than that of {}, "
-        "{:.3f} mm³",
-        volume, kept.largest, kept.largest_mm3));
-  }
-}
-
-// Whether decimation moved the surface past a witness that the union kept.
-// Witnesses count as deep as they lie above the bed once a flat-lying
-// model's underside is cut, and need only lie as deep as the surface may
-// have moved (the tolerance, or the deviation measured if larger).
-std::vector<Witness> lowered(const std::vector<Witness>& witnesses,
-                             double cut_z_mm) {
-  std::vector<Witness> moved;
-  for (Witness w : witnesses) {
-    w.point.z -= cut_z_mm;
-    w.depth_mm = std::min(w.depth_mm, w.point.z);
-    if (w.depth_mm > 0.0) moved.push_back(w);
-  }
-  return moved;
-}
-
-bool lost_in_decimation(const Decimated& decimated, const PartsKept& kept,
-                        const SolidOptions& options,
-                        const SolidReport& report) {
-  const std::vector<Witness> moved =
-      lowered(kept.witnesses, report.placement.cut_z_mm);
-  const double moved_mm =
-      std::max(options.print.tolerance_mm, decimated.stats.max_deviation_mm);
-  return !witnesses_outside(decimated.mesh, moved, moved_mm + kRoundingDepthMm)
-              .empty();
-}
-
 // Decimates the finished union where that keeps it printable and keeps
 // every witness of `kept`, and checks the mesh as it will be written.
 void decimate_and_check(TriangleMesh& mesh, const PartsKept& kept,
@@ -285,8 +155,8 @@ void decimate_and_check(TriangleMesh& mesh, const PartsKept& kept,
                         Stopwatch& clock, const Progress& tell) {
   if (options.unite && options.decimate) {
     tell("decimation", 0.0);
-    // A union that cannot be decimated is checked and written as it is,
-    // and its check says why.
+    // A union that cannot be decimated is checked and written as it is;
+    // the report says why.
     Decimated decimated = lsolid::decimate(
         mesh, {.tolerance_mm = options.print.tolerance_mm,
                .max_triangles = options.max_triangles,
@@ -297,11 +167,15 @@ void decimate_and_check(TriangleMesh& mesh, const PartsKept& kept,
     // The guard keeps every collapse valid; checking the result anyway
     // costs a second and means a failure ships the undecimated mesh, not a
     // broken one.
-    if (decimated.refused.empty()) {
+    if (!decimated.refused.empty()) {
+      report.decimation_discarded =
+          "could not be made (" + decimated.refused + ")";
+    } else {
       report.validation = validate(decimated.mesh);
       if (!report.validation.is_printable()) {
         report.decimation_discarded = "failed the check";
-      } else if (lost_in_decimation(decimated, kept, options, report)) {
+      } else if (lost_in_decimation(decimated, kept, options.print.tolerance_mm,
+                                    report.placement.cut_z_mm)) {
         report.decimation_discarded = "lost part of the model";
         report.validation = ValidationReport{};
       }
@@ -355,7 +229,7 @@ void unite_and_finish(std::vector<Part> parts, const SolidOptions& options,
     CavitiesFilled filled = fill_cavities(std::move(rounded.mesh));
     mesh = std::move(filled.mesh);
     report.cavities_filled += filled.removed;
-    check_union_kept(mesh, kept, report);
+    report.witnesses_checked = check_union_kept(mesh, kept);
     if (report.placement.lies_flat && report.placement.cut_z_mm > 0.0) {
       cut_underside(mesh, report.placement, options, report);
     }
@@ -364,167 +238,6 @@ void unite_and_finish(std::vector<Part> parts, const SolidOptions& options,
   }
   report.seconds.round = clock.lap();
   decimate_and_check(mesh, kept, options, report, clock, tell);
-}
-
-// A planar model lying flat, as the flat profile prints it: the outlines
-// seen from above of its branches, of the nodes where they meet and of the
-// leaves the parts print (those that do not cross themselves), placed as
-// the parts were, each with its material, and the height of the round
-// model once cut.
-struct FlatModel {
-  std::vector<std::vector<glm::dvec2>> outlines;
-  std::vector<int> materials;  ///< of each outline
-  double height_mm = 0.0;
-
-  // The outlines of one material.
-  [[nodiscard]] std::vector<std::vector<glm::dvec2>> of(int material) const {
-    std::vector<std::vector<glm::dvec2>> out;
-    for (std::size_t i = 0; i < outlines.size(); ++i) {
-      if (materials[i] == material) out.push_back(outlines[i]);
-    }
-    return out;
-  }
-};
-
-// Branches end square, as tubes do; where branch ends meet (a branch and
-// its continuation, the last branch of a closed curve and the first), a
-// polygon round the point, of the material of the branch that ends there
-// first (as a joint sphere takes its parent's), fills the notch outside a
-// bend (where tubes are mitred) and rounds the joint.
-FlatModel flat_model(const lsys::Skeleton& skeleton, const Placement& placement,
-                     const PrintSettings& print) {
-  FlatModel flat;
-  const auto add = [&](std::vector<glm::dvec2> outline, int color) {
-    if (outline.empty()) return;
-    flat.outlines.push_back(std::move(outline));
-    flat.materials.push_back(material_index(color, print.colors));
-  };
-  const double tolerance = print.tolerance_mm;
-  double plane_z = 0.0;
-  double reach = 0.0;  // above the plane
-  struct Node {
-    glm::dvec2 at;
-    double radius_mm = 0.0;
-    int ends = 0;
-    int color = 0;
-  };
-  // Ends meet where they fall on the same point of a 2^-20 mm grid.
-  std::map<std::pair<double, double>, Node> nodes;
-  const auto end_at = [&](const glm::dvec3& p, double r, int color) {
-    const auto key = std::pair(std::round(p.x * kFootprintCellsPerMm),
-                               std::round(p.y * kFootprintCellsPerMm));
-    Node& node = nodes[key];
-    if (node.ends++ == 0) {
-      node.at = glm::dvec2(p);
-      node.color = color;
-    }
-    node.radius_mm = std::max(node.radius_mm, r);
-  };
-  for (const lsys::Segment& s : skeleton.segments) {
-    const glm::dvec3 p0 = on_bed(placement, s.p0);
-    const glm::dvec3 p1 = on_bed(placement, s.p1);
-    plane_z = p0.z;
-    const double r0 = s.start_diameter / 2.0;
-    const double r1 = s.end_diameter / 2.0;
-    reach = std::max({reach, tube_corner_radius(r0, tolerance),
-                      tube_corner_radius(r1, tolerance)});
-    add(branch_outline(glm::dvec2(p0), r0, glm::dvec2(p1), r1, tolerance),
-        s.color);
-    end_at(p1, r1, s.color);
-    end_at(p0, r0, s.color);
-  }
-  // A leaf or disc that starts at a branch's tip gets a joint there in the
-  // round model (parts/parts.cpp's add_tip_joint), a wall and a half across at
-  // least: the flat model gets a node as wide, so that the round model's
-  // witnesses lie inside the footprint (a disc `@o` at each apex of vlab's
-  // signal models was reported lost).
-  for (const lsys::Polygon& polygon : skeleton.polygons) {
-    if (polygon.parent < 0) continue;
-    const lsys::Segment& stem =
-        skeleton.segments[static_cast<std::size_t>(polygon.parent)];
-    const glm::dvec3 tip = on_bed(placement, stem.p1);
-    Node& node = nodes[std::pair(std::round(tip.x * kFootprintCellsPerMm),
-                                 std::round(tip.y * kFootprintCellsPerMm))];
-    if (glm::length(polygon.points.front() - stem.p1) > node.radius_mm) {
-      continue;
-    }
-    node.radius_mm = std::max(node.radius_mm, 0.75 * print.wall_mm);
-    node.ends = std::max(node.ends, 2);
-    reach = std::max(reach, tube_corner_radius(node.radius_mm, tolerance));
-  }
-  for (const auto& [key, node] : nodes) {
-    if (node.ends > 1) {
-      add(node_outline(node.at, node.radius_mm, tolerance), node.color);
-    }
-  }
-  for (const lsys::Polygon& polygon : skeleton.polygons) {
-    std::vector<glm::dvec2> points;
-    for (const glm::dvec3& p : polygon.points) {
-      const glm::dvec3 q = on_bed(placement, p);
-      plane_z = q.z;
-      points.emplace_back(q);
-    }
-    if (is_simple_polygon(points)) {
-      add(std::move(points), polygon.color);
-      reach = std::max(reach, plate_thickness_mm(print.wall_mm, tolerance) / 2);
-    }
-  }
-  flat.height_mm = plane_z + reach - placement.cut_z_mm;
-  return flat;
-}
-
-// The flat model's size: its outlines' extent, and its height.
-glm::dvec3 extent(const FlatModel& flat) {
-  glm::dvec2 lo(1e300);
-  glm::dvec2 hi(-1e300);
-  for (const std::vector<glm::dvec2>& outline : flat.outlines) {
-    for (const glm::dvec2& p : outline) {
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
-    }
-  }
-  if (lo.x > hi.x) return glm::dvec3(0.0);
-  return {hi.x - lo.x, hi.y - lo.y, flat.height_mm};
-}
-
-// The plane union's invariant: it covers at least the largest outline's
-// area (a union never has less), and its extrusion holds the volume of
-// its area times its height.
-// @throws GeometryError if either fails.
-void check_footprint(const Footprint& footprint,
-                     const std::vector<std::vector<glm::dvec2>>& outlines,
-                     const TriangleMesh& solid, double height_mm) {
-  double largest = 0.0;
-  for (const std::vector<glm::dvec2>& outline : outlines) {
-    largest = std::max(largest, std::fabs(area(Footprint{{outline}})));
-  }
-  const double covered = area(footprint);
-  // Each point moves by at most half a grid step (2^-21 mm) onto the grid.
-  if (covered < largest * (1.0 - 1e-6)) {
-    throw GeometryError(fmt::format(
-        "the union of the outlines in the plane lost part of the model (a bug "
-        "in lsolid; please report it with this file): it covers {:.3f} mm², "
-        "less than its largest outline, {:.3f} mm²",
-        covered, largest));
-  }
-  const double volume = signed_volume(solid);
-  if (std::fabs(volume - covered * height_mm) > 1e-9 * covered * height_mm) {
-    throw GeometryError(fmt::format(
-        "the footprint's extrusion holds {:.3f} mm³, not its area times its "
-        "height, {:.3f} mm³ (a bug in lsolid; please report it with this "
-        "file)",
-        volume, covered * height_mm));
-  }
-}
-
-// The flat model united in the plane and extruded, standing on z = 0.
-TriangleMesh extruded(const FlatModel& flat, SolidReport& report) {
-  const Footprint footprint = footprint_union(flat.outlines);
-  TriangleMesh solid = extrude(footprint, flat.height_mm);
-  check_footprint(footprint, flat.outlines, solid, flat.height_mm);
-  report.flat_outlines = flat.outlines.size();
-  report.flat_rings = footprint.rings.size();
-  return solid;
 }
 
 // A planar model lying flat, with the flat profile: the outlines of its
@@ -539,7 +252,10 @@ void extrude_and_finish(const FlatModel& flat, const std::vector<Part>& parts,
   tell("union", 0.0);
   const PartsKept kept = parts_kept(parts);
   Placement& placement = report.placement;
-  mesh = extruded(flat, report);
+  Extruded extruded = extrude_flat_model(flat);
+  mesh = std::move(extruded.mesh);
+  report.flat_outlines = extruded.outlines;
+  report.flat_rings = extruded.rings;
   report.seconds.unite = clock.lap();
   tell("union", 1.0);
   tell("rounding", 0.0);
@@ -548,9 +264,9 @@ void extrude_and_finish(const FlatModel& flat, const std::vector<Part>& parts,
   mesh = std::move(rounded.mesh);
   accumulate(report.rounding, rounded.stats);
   placement.moved_by_mm.z -= placement.cut_z_mm;
-  check_witnesses(mesh, lowered(kept.witnesses, placement.cut_z_mm), kept,
-                  "the footprint", "; --profile round builds it as round tubes",
-                  report);
+  report.witnesses_checked = check_witnesses(
+      mesh, lowered(kept.witnesses, placement.cut_z_mm), kept, "the footprint",
+      "; --profile round builds it as round tubes");
   report.seconds.round = clock.lap();
   decimate_and_check(mesh, kept, options, report, clock, tell);
 }
@@ -779,7 +495,7 @@ Solid build_solid(const lsys::Grammar& grammar, const SolidOptions& options) {
   }
   tell("parts", 0.0);
 
-  // scale_to_print sizes the skeleton with round tubes; mitres, joints,
+  // estimate_scale sizes the skeleton with round tubes; mitres, joints,
   // hulls and a base disc reach beyond, so the placed parts are measured and
   // the scale corrected until the size asked for holds (the longest side,
   // or the height, of everything printed, base included).

@@ -6,8 +6,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/vec3.hpp>
-#include <limits>
 #include <vector>
+
+#include "lsys/bounds.hpp"
 
 namespace lsys {
 
@@ -78,12 +79,6 @@ struct Skeleton {
   return skeleton.segments.empty() && skeleton.polygons.empty() &&
          skeleton.spheres.empty() && skeleton.sheets.empty();
 }
-
-/// An axis-aligned box in model units; `min > max` when empty.
-struct Bounds {
-  glm::dvec3 min{std::numeric_limits<double>::infinity()};
-  glm::dvec3 max{-std::numeric_limits<double>::infinity()};
-};
 
 /// The box of what the skeleton draws: segments' ends, polygons' and
 /// sheets' points, and balls whole (tube widths are not counted). Empty

@@ -7,9 +7,6 @@
 #include "dialects/grammar_builder.hpp"
 
 #include <algorithm>
-#include <cctype>
-#include <cmath>
-#include <map>
 #include <set>
 #include <string_view>
 #include <unordered_map>

@@ -34,8 +34,8 @@ void check_brackets(const TextScan& scan, std::size_t count,
 
 }  // namespace
 
-void ModuleReader::tokenize_each(Range r,
-                                 const std::function<void(RawModule&&)>& each) {
+template <typename Each>
+void ModuleReader::tokenize_each(Range r, const Each& each) {
   std::size_t i = r.begin;
   for (;;) {
     while (i < r.end && is_blank(text_[i])) ++i;

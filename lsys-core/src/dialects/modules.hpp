@@ -4,7 +4,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -41,10 +40,6 @@ class ModuleReader : protected TextScan {
         grammar_(context.grammar),
         symbols_(symbols) {}
 
-  /// Calls `each` with every module of `r` in turn, so that a long axiom is
-  /// never held as tokens besides its successor.
-  /// @throws ParseError at a module the notation refuses or cannot read.
-  void tokenize_each(Range r, const std::function<void(RawModule&&)>& each);
   /// The modules of `r`.
   [[nodiscard]] std::vector<RawModule> tokenize(Range r);
   /// A successor or an axiom: the modules of the ranges with their
@@ -64,6 +59,10 @@ class ModuleReader : protected TextScan {
   void read_successors_into(ExpressionScope& scope, Successor& all);
 
  private:
+  // Calls `each` with every module of `r` in turn, so that a long axiom is
+  // never held as tokens besides its successor.
+  template <typename Each>
+  void tokenize_each(Range r, const Each& each);
   // The `)` that closes the `(` at `open`, outside Python's strings.
   std::size_t skip_arguments(std::size_t open, std::size_t end) const;
 

@@ -74,7 +74,8 @@ struct Decimated {
   TriangleMesh mesh;  ///< the input itself when `refused` says why
   DecimateStats stats;
   /// Why nothing was decimated: the mesh is not a 2-manifold OpenMesh can
-  /// take, or a test inside the decimation failed. Empty when decimated.
+  /// take, or an exact test inside the decimation refused its triangles
+  /// (CGAL's checks). Empty when decimated.
   std::string refused;
 };
 

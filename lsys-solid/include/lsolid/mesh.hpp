@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "lsys/bounds.hpp"
+
 namespace lsolid {
 
 /// An indexed triangle mesh in millimetres. Triangles list vertex indices
@@ -19,13 +21,9 @@ struct TriangleMesh {
   std::vector<std::array<std::uint32_t, 3>> triangles;
 };
 
-/// An axis-aligned box; `min > max` when empty.
-struct Box {
-  glm::dvec3 min{1e300, 1e300, 1e300};
-  glm::dvec3 max{-1e300, -1e300, -1e300};
-  [[nodiscard]] bool empty() const noexcept { return min.x > max.x; }
-  [[nodiscard]] glm::dvec3 size() const noexcept { return max - min; }
-};
+/// An axis-aligned box in millimetres; empty (`min > max`) until a point is
+/// added.
+using Box = lsys::Bounds;
 
 /// A closed, outward-oriented solid of the model, before the union.
 struct Part {

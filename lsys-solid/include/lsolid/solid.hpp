@@ -96,7 +96,8 @@ struct SolidReport {
   /// `decimation` still says what it did).
   bool decimated = false;
   /// Why a decimated mesh was thrown away ("failed the check", "lost part
-  /// of the model"); empty when it was used or decimation was off.
+  /// of the model", "could not be made (the reason)"); empty when it was
+  /// used or decimation was off.
   std::string decimation_discarded;
   DecimateStats decimation;
   /// Points deep inside the parts found inside the union (the union's

@@ -72,23 +72,26 @@ ExactMesh cutter_above(const TriangleMesh& mesh, double z_mm) {
 }  // namespace
 
 std::optional<TriangleMesh> cut_below(const TriangleMesh& input, double z_mm) {
-  const auto soup = polygon_soup<ExactPoint>(input);
-  if (!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons)) return std::nullopt;
-  ExactMesh mesh;
-  PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, mesh);
-  ExactMesh cutter = cutter_above(input, z_mm);
   // CGAL's preconditions throw (lsys-solid/CMakeLists.txt); a cut they
-  // refuse is a cut that cannot be made.
+  // refuse, anywhere from reading the mesh to ordering the result, is a
+  // cut that cannot be made.
   try {
+    const auto soup = polygon_soup<ExactPoint>(input);
+    if (!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons)) {
+      return std::nullopt;
+    }
+    ExactMesh mesh;
+    PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, mesh);
+    ExactMesh cutter = cutter_above(input, z_mm);
     if (!PMP::clip(mesh, cutter, CGAL::parameters::clip_volume(true))) {
       return std::nullopt;
     }
     PMP::triangulate_faces(mesh);
+    mesh.collect_garbage();
+    return to_triangle_mesh(canonical_order(mesh));
   } catch (const std::exception&) {
     return std::nullopt;
   }
-  mesh.collect_garbage();
-  return to_triangle_mesh(canonical_order(mesh));
 }
 
 }  // namespace lsolid

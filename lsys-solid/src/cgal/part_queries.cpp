@@ -21,8 +21,6 @@
 #include "lsolid/errors.hpp"
 
 namespace lsolid {
-namespace {}  // namespace
-
 std::vector<std::array<std::uint32_t, 3>> convex_hull_triangles(
     const std::vector<glm::dvec3>& points) {
   std::vector<InexactPoint> input;

@@ -773,12 +773,15 @@ Decimated decimate(const TriangleMesh& input, const DecimateOptions& options) {
   double aim = options.aim;
   Decimated out;
   for (int attempt = 1;; ++attempt) {
-    // A mesh OpenMesh cannot take, or an exact test that CGAL refuses
-    // (its preconditions throw), leaves the mesh as it was: the build then
-    // checks and writes it undecimated.
+    // A mesh OpenMesh cannot take (GeometryError), or an exact test that
+    // CGAL refuses (its preconditions throw logic errors), leaves the mesh
+    // as it was: the build then checks and writes it undecimated. Anything
+    // else, such as a progress callback's own exception, goes on.
     try {
       out = decimate_once(input, options, aim);
-    } catch (const std::exception& e) {
+    } catch (const GeometryError& e) {
+      return Decimated{.mesh = input, .refused = e.what()};
+    } catch (const std::logic_error& e) {
       return Decimated{.mesh = input, .refused = e.what()};
     }
     out.stats.attempts = attempt;

@@ -112,7 +112,7 @@ PartSet build_parts(const lsys::Skeleton& skeleton,
         joint.color});
     ++set.joints;
   }
-  // `@O` balls, each its own part of its own colour (scale_to_print made
+  // `@O` balls, each its own part of its own colour (scale_skeleton made
   // them a wall across at least).
   for (const lsys::Sphere& b : skeleton.spheres) {
     set.parts.push_back(

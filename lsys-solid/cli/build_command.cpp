@@ -24,23 +24,10 @@
 #include "lsolid/units.hpp"
 #include "lsys/diagnostic.hpp"
 #include "pieces.hpp"
+#include "report_json.hpp"
 
 namespace lsolid::cli {
 namespace {
-
-// How many triangles of each colour are written: those of the volumes with
-// --multi-material, else those of the one mesh.
-std::map<int, std::size_t> color_counts(const Solid& solid) {
-  std::map<int, std::size_t> triangles;
-  for (const ColoredMesh& v : solid.volumes) {
-    for (const int c : v.colors) ++triangles[c];
-  }
-  if (solid.volumes.empty()) {
-    for (const int c : solid.colors) ++triangles[c];
-  }
-  if (triangles.empty()) triangles[0] = solid.mesh.triangles.size();
-  return triangles;
-}
 
 void print_report(const SolidReport& r, bool united) {
   const ValidationReport& v = r.validation;
@@ -160,98 +147,6 @@ void print_report(const SolidReport& r, bool united) {
   }
 }
 
-// The report as one JSON object, for scripts (--json); docs/cli.md lists
-// its members in this order.
-Json json_report(const Solid& solid, const OverhangReport& over,
-                 const std::optional<glm::dvec3>& bed, bool fits,
-                 const std::filesystem::path& output, bool written, bool united,
-                 bool colored, const std::vector<Rgb>& palette) {
-  const SolidReport& r = solid.report;
-  const ValidationReport& v = r.validation;
-  const Placement& p = r.placement;
-  Json colors = nullptr;
-  if (colored) {
-    colors = Json::array();
-    for (const auto& [color, count] : color_counts(solid)) {
-      colors.push_back({{"color", color},
-                        {"rgb", hex(palette_color(color, palette))},
-                        {"triangles", count}});
-    }
-  }
-  Json volumes = nullptr;
-  for (const ColoredMesh& m : solid.volumes) {
-    volumes.push_back({{"color", m.colors.empty() ? 0 : m.colors.front()},
-                       {"triangles", m.mesh.triangles.size()},
-                       {"volume_mm3", signed_volume(m.mesh)}});
-  }
-  Json decimation = nullptr;
-  if (r.decimated) {
-    const DecimateStats& d = r.decimation;
-    decimation = {{"triangles_before", d.triangles_before},
-                  {"triangles_after", d.triangles_after},
-                  {"refused_intersections", d.refused_intersections},
-                  {"max_deviation_mm", d.max_deviation_mm},
-                  {"tolerance_mm", d.tolerance_mm},
-                  {"within_tolerance", d.within_tolerance},
-                  {"runs", d.attempts},
-                  {"short_edges_left", d.short_edges_left},
-                  {"reached_max_triangles", d.reached_max_triangles}};
-  }
-  Json base = nullptr;
-  if (p.has_base) {
-    base = {{"radius_mm", p.base_radius_mm},
-            {"thickness_mm", p.base_thickness_mm}};
-  }
-  Json profile = nullptr;
-  if (p.lies_flat) profile = r.flat_outlines > 0 ? "flat" : "round";
-  return Json{{"output", output.string()},
-              {"written", written},
-              {"united", united},
-              {"segments", r.segments},
-              {"repeated_segments", r.repeated_segments},
-              {"leaves", r.polygons},
-              {"tubes", r.tubes},
-              {"junction_hulls", r.junctions},
-              {"joints", r.joints},
-              {"leaf_plates", r.plates},
-              {"spheres", r.spheres},
-              {"surface_plates", r.sheets},
-              {"contacts", r.union_stats.contacts},
-              {"booleans", r.union_stats.booleans},
-              {"mm_per_unit", r.mm_per_unit},
-              {"base", std::move(base)},
-              {"lies_flat", p.lies_flat},
-              {"profile", std::move(profile)},
-              {"underside_cut_mm", p.cut_depth_mm},
-              {"decimation", std::move(decimation)},
-              {"colors", std::move(colors)},
-              {"volumes", std::move(volumes)},
-              {"triangles", v.triangles},
-              {"volume_mm3", v.volume_mm3},
-              {"bounds", json_box(v.bounds)},
-              {"printable", v.is_printable()},
-              {"shells", v.shells},
-              {"pieces", v.pieces()},
-              {"loose_pieces", json_loose_pieces(v)},
-              {"genus", v.genus},
-              {"overhang_mm2", over.area_mm2},
-              {"needs_supports", over.needs_supports},
-              {"fits_bed", bed ? Json(fits) : Json(nullptr)},
-              {"warnings", r.warnings},
-              {"seconds",
-               {{"skeleton", r.seconds.skeleton},
-                {"parts", r.seconds.parts},
-                {"union", r.seconds.unite},
-                {"rounding", r.seconds.round},
-                {"decimation", r.seconds.decimate},
-                {"check", r.seconds.check},
-                {"volumes", r.seconds.volumes}}}};
-}
-
-}  // namespace
-
-namespace {
-
 // The colours written, and with --multi-material the volumes.
 void print_colors(const Solid& solid, const std::vector<Rgb>& palette) {
   std::vector<std::string> names;
@@ -367,6 +262,7 @@ void run_build(const BuildCommand& command) {
   options.float_coordinates =
       format != MeshFormat::Off && format != MeshFormat::Obj;
   options.colors = colored && options.unite;
+  options.preview_colors = !preview.empty();
   options.multi_material = command.multi_material;
   const bool text = !command.quiet && !command.json;
   // A progress bar on a terminal only: redrawn in place on standard error,
@@ -439,7 +335,7 @@ void run_build(const BuildCommand& command) {
   }
   const auto finish = [&](bool written) {
     if (command.json) {
-      fmt::print("{}", json_line(json_report(solid, over, bed, fits, output,
+      fmt::print("{}", json_line(report_json(solid, over, bed, fits, output,
                                              written, options.unite, colored,
                                              options.print.colors)));
     }
@@ -490,7 +386,14 @@ void run_build(const BuildCommand& command) {
         options.unite ? "" : " (overlapping parts, not united: --no-union)");
   }
   if (!preview.empty()) {
-    write_png(render_preview(solid.mesh), preview);
+    PreviewOptions look;
+    look.triangle_colors.reserve(solid.colors.size());
+    for (const int color : solid.colors) {
+      const Rgb rgb = palette_color(color, options.print.colors);
+      look.triangle_colors.emplace_back(rgb.r / 255.0, rgb.g / 255.0,
+                                        rgb.b / 255.0);
+    }
+    write_png(render_preview(solid.mesh, look), preview);
     if (text) fmt::print("rendered {}\n", preview.string());
   }
   finish(true);

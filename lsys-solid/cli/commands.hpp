@@ -128,6 +128,20 @@ class Refused : public std::runtime_error {
 /// @throws Refused, lsys::ParseError, GeometryError, IoError.
 void run_build(const BuildCommand& command);
 
+/// `lsolid view FILE`: serves a page that shows the model as it is built,
+/// and builds it again when the file is saved or a control changed.
+struct ViewCommand {
+  GrammarInput input;
+  PrintInput print;
+  std::optional<std::string> bed;  ///< the build volume drawn as the bed
+  std::string host = "127.0.0.1";
+  int port = 0;  ///< 0: the first free one from 8400 on
+};
+/// Serves until interrupted (Ctrl-C) or terminated.
+/// @throws IoError when the file is missing or the port cannot be bound,
+///   lsys::ParseError for a bad option.
+void run_view(const ViewCommand& command);
+
 /// `lsolid check MESH`: validates an STL, OFF, 3MF or OBJ file.
 struct CheckCommand {
   std::string file;

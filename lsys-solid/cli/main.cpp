@@ -29,6 +29,7 @@ Examples:
   lsolid printables/hilbert-cube.ls --size 60mm
   lsolid check bush.stl
   lsolid printables/abop-1.25-bush.ls -n 5 --preview bush.png
+  lsolid view printables/abop-1.25-bush.ls -n 5
   lsolid derive printables/hilbert-cube.ls -n 2
   lsolid derive printables/abop-1.25-bush.ls --stats
   lsolid skeleton printables/honda-2.1a.ls --json
@@ -108,6 +109,25 @@ int main(int argc, char** argv) {
   skeleton_app->add_flag("--json", skeleton.json,
                          "print every segment and polygon as JSON");
 
+  lsolid::cli::ViewCommand view;
+  CLI::App* view_app = app.add_subcommand(
+      "view",
+      "serve a page that shows the model as it is built and builds it again "
+      "when the file is saved (http://127.0.0.1:8400/)");
+  lsolid::cli::add_grammar_options(*view_app, view.input, true);
+  lsolid::cli::add_print_options(*view_app, view.print);
+  view_app->add_option("--bed", view.bed,
+                       "the printer's build volume, e.g. 220x220x250mm, drawn "
+                       "as the bed; the report says whether the model fits "
+                       "(default 220x220x250mm)");
+  view_app->add_option("--host", view.host,
+                       "the address to listen on (default 127.0.0.1; any "
+                       "other serves the network)");
+  view_app
+      ->add_option("--port", view.port,
+                   "the port (default the first free one from 8400)")
+      ->check(CLI::Range(0, 65535));
+
   lsolid::cli::CheckCommand check;
   CLI::App* check_app = app.add_subcommand(
       "check",
@@ -126,8 +146,8 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : kExitInput;
   }
 
-  const bool is_build =
-      !check_app->parsed() && !derive_app->parsed() && !skeleton_app->parsed();
+  const bool is_build = !check_app->parsed() && !derive_app->parsed() &&
+                        !skeleton_app->parsed() && !view_app->parsed();
   if (is_build && build.input.file.empty()) {
     std::fputs(app.help().c_str(), stderr);
     return kExitInput;
@@ -138,6 +158,7 @@ int main(int argc, char** argv) {
     if (is_check && !lsolid::cli::run_check(check)) code = kExitNotPrintable;
     if (derive_app->parsed()) lsolid::cli::run_derive(derive);
     if (skeleton_app->parsed()) lsolid::cli::run_skeleton(skeleton);
+    if (view_app->parsed()) lsolid::cli::run_view(view);
     if (is_build) lsolid::cli::run_build(build);
     // A report that could not be written is lost, whatever else succeeded
     // (`lsolid x.ls > /dev/full`).

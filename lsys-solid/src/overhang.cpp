@@ -14,13 +14,15 @@
 
 namespace lsolid {
 
-OverhangReport overhang(const TriangleMesh& mesh, double limit_deg) {
-  OverhangReport report;
-  if (mesh.triangles.empty()) return report;
+std::vector<bool> overhanging_triangles(const TriangleMesh& mesh,
+                                        double limit_deg) {
+  std::vector<bool> out(mesh.triangles.size(), false);
+  if (mesh.triangles.empty()) return out;
   const double bed = bounds(mesh).min.z;
   constexpr double kOnBed = 1e-3;
   const double steep = std::sin(limit_deg * std::numbers::pi / 180.0);
-  for (const auto& t : mesh.triangles) {
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const auto& t = mesh.triangles[i];
     const glm::dvec3& a = mesh.vertices[t[0]];
     const glm::dvec3& b = mesh.vertices[t[1]];
     const glm::dvec3& c = mesh.vertices[t[2]];
@@ -28,7 +30,21 @@ OverhangReport overhang(const TriangleMesh& mesh, double limit_deg) {
     const glm::dvec3 n = glm::cross(b - a, c - a);
     const double twice_area = glm::length(n);
     if (twice_area == 0.0) continue;
-    if (-n.z / twice_area > steep) report.area_mm2 += twice_area / 2.0;
+    out[i] = -n.z / twice_area > steep;
+  }
+  return out;
+}
+
+OverhangReport overhang(const TriangleMesh& mesh, double limit_deg) {
+  OverhangReport report;
+  const std::vector<bool> steep = overhanging_triangles(mesh, limit_deg);
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    if (!steep[i]) continue;
+    const auto& t = mesh.triangles[i];
+    report.area_mm2 +=
+        glm::length(glm::cross(mesh.vertices[t[1]] - mesh.vertices[t[0]],
+                               mesh.vertices[t[2]] - mesh.vertices[t[0]])) /
+        2.0;
   }
   report.needs_supports = report.area_mm2 > kSupportArea;
   return report;

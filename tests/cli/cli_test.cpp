@@ -1,6 +1,7 @@
 // Copyright 2026 the lsolid authors
 // SPDX-License-Identifier: MIT
 #include <gtest/gtest.h>
+#include <png.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/un.h>
@@ -314,6 +315,62 @@ TEST_F(Build, RendersAPreviewBesideTheMesh) {
                  "--preview: error: a preview is a PNG: name it FILE.png, not "
                  "'b.jpg'\n");
   EXPECT_FALSE(std::filesystem::exists(dir_ / "b.jpg"));
+}
+
+// The preview's pixels that are clearly brown (the palette's colour 0,
+// #7B4A2A) and clearly green (colour 1, #2E6B2E).
+std::pair<int, int> brown_and_green(const std::filesystem::path& png_file) {
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&png, png_file.string().c_str())) {
+    ADD_FAILURE() << "cannot read " << png_file;
+    return {0, 0};
+  }
+  png.format = PNG_FORMAT_RGB;
+  std::vector<std::uint8_t> pixels(PNG_IMAGE_SIZE(png));
+  EXPECT_TRUE(png_image_finish_read(&png, nullptr, pixels.data(), 0, nullptr));
+  int brown = 0;
+  int green = 0;
+  for (std::size_t i = 0; i + 2 < pixels.size(); i += 3) {
+    const int red = pixels[i];
+    const int g = pixels[i + 1];
+    const int blue = pixels[i + 2];
+    brown += red > g + 20 && g > blue ? 1 : 0;
+    green += g > red + 20 && g > blue + 20 ? 1 : 0;
+  }
+  return {brown, green};
+}
+
+TEST_F(Build, PreviewsTheModelInItsColours) {
+  // A brown stem (colour 0) with a green leaf (colour 1): a plate of its
+  // own, coloured as it is in a 3MF even when the output is an STL.
+  {
+    std::ofstream(dir_ / "leaf.ls")
+        << "n = 0\nwidth: 0.2\nscale: 8mm\nbase: none\n"
+           "\u03C9: F[&'{+f-ff-f+|+f-ff-f}]F\n";
+  }
+  ASSERT_EQ(
+      run_command(lsolid() + " leaf.ls --preview leaf.png", dir_).exit_code, 0);
+  const auto [brown, green] = brown_and_green(dir_ / "leaf.png");
+  EXPECT_GT(brown, 1000);
+  EXPECT_GT(green, 1000);
+  // A stem that turns green halfway: one tube for an STL, two for a 3MF,
+  // and both drawn brown, then green.
+  {
+    std::ofstream(dir_ / "two.ls")
+        << "n = 0\nwidth: 0.2\nscale: 8mm\nbase: none\n\u03C9: F'F\n";
+  }
+  ASSERT_EQ(run_command(lsolid() + " two.ls --preview stl.png", dir_).exit_code,
+            0);
+  const auto [brown_stl, green_stl] = brown_and_green(dir_ / "stl.png");
+  EXPECT_GT(brown_stl, 1000);
+  EXPECT_GT(green_stl, 1000);
+  ASSERT_EQ(run_command(lsolid() + " two.ls -o two.3mf --preview 3mf.png", dir_)
+                .exit_code,
+            0);
+  const auto [brown_3mf, green_3mf] = brown_and_green(dir_ / "3mf.png");
+  EXPECT_GT(brown_3mf, 1000);
+  EXPECT_GT(green_3mf, 1000);
 }
 
 TEST_F(Build, RefusesAnUnknownBase) {

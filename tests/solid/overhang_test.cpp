@@ -32,6 +32,23 @@ TEST(Overhang, CountsTheUndersideOfWhatHangsInTheAir) {
   EXPECT_FALSE(overhang(small).needs_supports);
 }
 
+TEST(Overhang, FlagsTheTrianglesOfACeilingOnly) {
+  TriangleMesh m = box_mesh({0, 0, 0}, {1, 1, 1});
+  append(m, box_mesh({-1, -1, 5}, {2, 1, 6}));
+  const std::vector<bool> steep = overhanging_triangles(m);
+  ASSERT_EQ(steep.size(), m.triangles.size());
+  std::size_t flagged = 0;
+  for (std::size_t i = 0; i < steep.size(); ++i) {
+    if (!steep[i]) continue;
+    ++flagged;
+    // Only the upper box's floor, at z = 5, faces down in the air.
+    for (const std::uint32_t v : m.triangles[i]) {
+      EXPECT_EQ(m.vertices[v].z, 5.0);
+    }
+  }
+  EXPECT_EQ(flagged, 2U);
+}
+
 TEST(Overhang, CountsFacesSteeperThanTheLimitOnly) {
   // Two downward faces of 1 mm² above the bed: one 30° below the
   // horizontal (a gentle slope), one 60° below it.

@@ -42,6 +42,35 @@ TEST(Preview, DrawsTheModelShadedOnAPlainBackground) {
   }
 }
 
+TEST(Preview, DrawsEachTriangleInItsColour) {
+  const TriangleMesh box = box_mesh({0, 0, 0}, {10, 10, 10});
+  // The box's lower half of triangles green, the others blue: both show,
+  // shaded, and nothing of the single colour (warm: red above the rest)
+  // does, not even where the edges blend into the background.
+  PreviewOptions look{.width_px = 160, .height_px = 120};
+  for (std::size_t i = 0; i < box.triangles.size(); ++i) {
+    look.triangle_colors.emplace_back(i < box.triangles.size() / 2
+                                          ? glm::dvec3(0.0, 0.8, 0.0)
+                                          : glm::dvec3(0.0, 0.0, 0.8));
+  }
+  const Image image = render_preview(box, look);
+  int green = 0;
+  int blue = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const glm::ivec3 c = image.at(x, y);
+      if (is_background(c)) continue;
+      EXPECT_FALSE(c.r > c.g + 30 && c.r > c.b + 30) << x << "," << y;
+      green += c.g > c.b + 40 ? 1 : 0;
+      blue += c.b > c.g + 40 ? 1 : 0;
+    }
+  }
+  EXPECT_GT(green, 500);
+  EXPECT_GT(blue, 500);
+  look.triangle_colors.pop_back();
+  EXPECT_THROW((void)render_preview(box, look), std::logic_error);
+}
+
 TEST(Preview, FitsTheModelWhateverItsSize) {
   // A long thin bar, far from the origin: it still spans the picture.
   const Image image =

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <vector>
+
 #include "lsolid/mesh.hpp"
 
 namespace lsolid {
@@ -18,8 +20,14 @@ struct OverhangReport {
 /// Overhang areas below this are left to bridging, not supports.
 inline constexpr double kSupportArea = 5.0;
 
-/// The overhang of a mesh standing on z = its lowest point. Faces lying on
-/// the bed (within 10⁻³ mm of it) do not count.
+/// Which triangles of a mesh standing on z = its lowest point overhang:
+/// their normal points more than `limit_deg` below the horizontal, and they
+/// do not lie on the bed (within 10⁻³ mm of it). One flag per triangle.
+[[nodiscard]] std::vector<bool> overhanging_triangles(const TriangleMesh& mesh,
+                                                      double limit_deg = 45.0);
+
+/// The overhang of a mesh standing on z = its lowest point: the area of its
+/// overhanging_triangles.
 [[nodiscard]] OverhangReport overhang(const TriangleMesh& mesh,
                                       double limit_deg = 45.0);
 

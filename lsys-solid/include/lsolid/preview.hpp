@@ -29,7 +29,9 @@ struct PreviewOptions {
   /// this far above the horizon: a three-quarter view.
   double azimuth_deg = -60.0;
   double elevation_deg = 25.0;
-  glm::dvec3 color{0.80, 0.52, 0.26};       ///< the model's, 0–1
+  glm::dvec3 color{0.80, 0.52, 0.26};  ///< the model's, 0–1
+  /// One colour per triangle (0–1), drawn instead of `color`; empty: none.
+  std::vector<glm::dvec3> triangle_colors;
   glm::dvec3 background{0.95, 0.95, 0.95};  ///< plain, 0–1
   int supersampling = 2;  ///< drawn this many times larger, then averaged
 };
@@ -37,6 +39,7 @@ struct PreviewOptions {
 /// Renders the mesh shaded (two lights, flat shading) in orthographic
 /// projection, fitted to the picture with a margin, with offscreen OpenGL
 /// (Mesa's OSMesa, a software renderer: no display or GPU needed).
+/// @pre `options.triangle_colors` is empty or has one entry per triangle.
 /// @throws IoError if no OpenGL context can be made.
 [[nodiscard]] Image render_preview(const TriangleMesh& mesh,
                                    const PreviewOptions& options = {});

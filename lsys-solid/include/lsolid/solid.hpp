@@ -39,6 +39,14 @@ struct SolidOptions {
   /// Colour each triangle by the turtle's colour index (for 3MF and OBJ).
   /// Parts are then built one colour each (PartOptions::split_colors).
   bool colors = false;
+  /// Colour each triangle by the turtle's colour index without building the
+  /// united parts one colour each (for the preview and the viewer): the
+  /// colours are looked up on parts built one colour each beside them, so
+  /// the union keeps its long tubes and hull junctions and costs what an
+  /// uncoloured one does. Where a colour changes along a tube the boundary
+  /// follows the union's triangles nearest the change, not a tube's end.
+  /// Ignored when `colors` is set.
+  bool preview_colors = false;
   /// Also build one volume per colour, not overlapping (`--multi-material`;
   /// needs `unite`).
   bool multi_material = false;
@@ -130,6 +138,14 @@ struct Solid {
 ///   draws nothing (lsys::nothing_drawn_error), GeometryError when the union
 ///   fails.
 [[nodiscard]] Solid build_solid(const lsys::Grammar& grammar,
+                                const SolidOptions& options = {});
+
+/// The same from a skeleton already drawn (the viewer shows it first):
+/// `drawn` is what lsys::interpret returns for `grammar` with the options'
+/// derivation and interpretation, which are not used again.
+/// @throws as build_solid above.
+[[nodiscard]] Solid build_solid(const lsys::Grammar& grammar,
+                                const lsys::Skeleton& drawn,
                                 const SolidOptions& options = {});
 
 }  // namespace lsolid

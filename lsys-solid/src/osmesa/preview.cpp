@@ -21,6 +21,7 @@
 #include <glm/mat4x4.hpp>
 #include <memory>
 #include <numbers>
+#include <stdexcept>
 
 #include "lsolid/errors.hpp"
 
@@ -136,12 +137,21 @@ Image render_preview(const TriangleMesh& mesh, const PreviewOptions& options) {
   glShadeModel(GL_FLAT);
   glLoadMatrixd(glm::value_ptr(view));
 
-  // Each triangle with its own normal (flat shading), as vertex arrays.
+  // Each triangle with its own normal (flat shading), as vertex arrays;
+  // its colour, if it has one, as the material's ambient and diffuse
+  // colour.
+  const bool colored = !options.triangle_colors.empty();
+  if (colored && options.triangle_colors.size() != mesh.triangles.size()) {
+    throw std::logic_error("render_preview: one colour per triangle expected");
+  }
   std::vector<GLfloat> positions;
   std::vector<GLfloat> normals;
+  std::vector<GLfloat> colors;
   positions.reserve(mesh.triangles.size() * 9);
   normals.reserve(mesh.triangles.size() * 9);
-  for (const auto& t : mesh.triangles) {
+  if (colored) colors.reserve(mesh.triangles.size() * 12);
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const auto& t = mesh.triangles[i];
     const glm::dvec3& a = mesh.vertices[t[0]];
     const glm::dvec3& b = mesh.vertices[t[1]];
     const glm::dvec3& c = mesh.vertices[t[2]];
@@ -155,12 +165,22 @@ Image render_preview(const TriangleMesh& mesh, const PreviewOptions& options) {
       normals.insert(normals.end(), {static_cast<GLfloat>(unit.x),
                                      static_cast<GLfloat>(unit.y),
                                      static_cast<GLfloat>(unit.z)});
+      if (colored) {
+        const auto color = rgba(options.triangle_colors[i]);
+        colors.insert(colors.end(), color.begin(), color.end());
+      }
     }
   }
   glEnableClientState(GL_VERTEX_ARRAY);
   glEnableClientState(GL_NORMAL_ARRAY);
   glVertexPointer(3, GL_FLOAT, 0, positions.data());
   glNormalPointer(GL_FLOAT, 0, normals.data());
+  if (colored) {
+    glEnable(GL_COLOR_MATERIAL);
+    glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glColorPointer(4, GL_FLOAT, 0, colors.data());
+  }
   glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(positions.size() / 3));
   glFinish();
 

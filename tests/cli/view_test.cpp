@@ -1,0 +1,364 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// `lsolid view`'s server, from outside: a real lsolid process on a free
+// port, asked over HTTP as the page asks it (the page itself is driven in
+// Chromium by tests/browser/view_test.mjs).
+#include <arpa/inet.h>
+#include <gtest/gtest.h>
+#include <httplib.h>
+#include <netinet/in.h>
+#include <signal.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "support/run_command.hpp"
+#include "support/test_dir.hpp"
+
+namespace lsolid {
+namespace {
+
+using Json = nlohmann::json;
+using testing::lsolid;
+using testing::run_command;
+
+const std::filesystem::path kSource = LSOLID_SOURCE_DIR;
+
+// A port no one listens on now.
+int free_port() {
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof(address));
+  socklen_t length = sizeof(address);
+  ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length);
+  ::close(fd);
+  return ntohs(address.sin_port);
+}
+
+// `lsolid view` running in the background, stopped as Ctrl-C stops it.
+class ViewProcess {
+ public:
+  ViewProcess(const std::filesystem::path& folder, const std::string& file,
+              const std::vector<std::string>& options = {})
+      : port_(free_port()) {
+    std::vector<std::string> words{LSOLID_BINARY, "view", file, "--port",
+                                   std::to_string(port_)};
+    words.insert(words.end(), options.begin(), options.end());
+    log_ = folder / "view.log";
+    pid_ = ::fork();
+    if (pid_ == 0) {
+      if (::chdir(folder.c_str()) != 0) ::_exit(126);
+      std::vector<char*> argv;
+      for (std::string& w : words) argv.push_back(w.data());
+      argv.push_back(nullptr);
+      const std::string log = log_.string();
+      if (std::freopen(log.c_str(), "w", stdout) == nullptr ||
+          std::freopen(log.c_str(), "a", stderr) == nullptr) {
+        ::_exit(126);
+      }
+      ::execv(argv[0], argv.data());
+      ::_exit(127);
+    }
+    client_ = std::make_unique<httplib::Client>("127.0.0.1", port_);
+    client_->set_read_timeout(10, 0);
+    // Listening once the page answers.
+    for (int i = 0; i < 200 && !client_->Get("/status"); ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+  }
+  ~ViewProcess() { stop(); }
+
+  // Stops it with SIGINT; returns its exit code.
+  int stop() {
+    if (pid_ <= 0) return exit_code_;
+    ::kill(pid_, SIGINT);
+    int status = 0;
+    ::waitpid(pid_, &status, 0);
+    pid_ = 0;
+    exit_code_ = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return exit_code_;
+  }
+
+  httplib::Client& client() { return *client_; }
+  int port() const { return port_; }
+  std::string log() const { return testing::read_text(log_); }
+
+  Json status() {
+    const auto r = client_->Get("/status");
+    return r && r->status == 200 ? Json::parse(r->body) : Json();
+  }
+
+  // Polls the status until `done` holds of it, for at most `seconds`.
+  Json wait_for(const std::function<bool(const Json&)>& done,
+                int seconds = 120) {
+    const auto until =
+        std::chrono::steady_clock::now() + std::chrono::seconds(seconds);
+    Json s;
+    while (std::chrono::steady_clock::now() < until) {
+      s = status();
+      if (!s.is_null() && done(s)) return s;
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    ADD_FAILURE() << "timed out; last status: " << s.dump() << "\n" << log();
+    return s;
+  }
+
+ private:
+  int port_;
+  pid_t pid_ = 0;
+  int exit_code_ = -1;
+  std::filesystem::path log_;
+  std::unique_ptr<httplib::Client> client_;
+};
+
+bool built(const Json& s) {
+  return s["stage"] == "done" && s["model"].get<int>() > 0 &&
+         s["error"].is_null();
+}
+
+class View : public ::testing::Test {
+ protected:
+  void SetUp() override { dir_ = testing::make_test_dir("view"); }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  void write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+  }
+  // ABOP's bush (fig. 1.25) as bush.ls: slow at n = 6, quick at n = 2.
+  void use_bush() {
+    std::filesystem::copy_file(kSource / "printables/abop-1.25-bush.ls",
+                               dir_ / "bush.ls");
+  }
+  // The segments the bush draws at n, as `lsolid skeleton` counts them.
+  int bush_segments(int n) {
+    const auto r = run_command(
+        lsolid() + " skeleton bush.ls -n " + std::to_string(n), dir_);
+    return std::stoi(r.out.substr(r.out.find(' ') + 1));
+  }
+  std::filesystem::path dir_;
+};
+
+constexpr const char* kTree =
+    "n = 2\n\u03B4 = 25\nwidth: 1\nsize: 40mm\n\u03C9: A\n"
+    "A \u2192 F[+A][-A]FA\n";
+
+TEST_F(View, ServesItsPageAndNothingElse) {
+  write("tree.ls", kTree);
+  ViewProcess view(dir_, "tree.ls");
+  auto& client = view.client();
+  const auto page = client.Get("/");
+  ASSERT_TRUE(page) << view.log();
+  EXPECT_EQ(page->status, 200);
+  EXPECT_NE(page->body.find("<title>lsolid view</title>"), std::string::npos);
+  for (const char* asset : {"/viewer.js", "/viewer.css", "/three/three.min.js",
+                            "/three/OrbitControls.js"}) {
+    const auto r = client.Get(asset);
+    ASSERT_TRUE(r) << asset;
+    EXPECT_EQ(r->status, 200) << asset;
+    EXPECT_GT(r->body.size(), 100U) << asset;
+  }
+  // No path names a file: traversals, encoded or not, and any other path
+  // find nothing.
+  for (const char* path :
+       {"/../../../../etc/passwd", "/three/../../../../etc/passwd",
+        "/%2e%2e/%2e%2e/%2e%2e/etc/passwd",
+        "/three/..%2f..%2f..%2fetc%2fpasswd", "/viewer.js/../tree.ls",
+        "/tree.ls", "/three/three.module.js", "/download/model.obj",
+        "/download/../tree.ls", "/nothing"}) {
+    const auto r = client.Get(path);
+    ASSERT_TRUE(r) << path;
+    EXPECT_EQ(r->status, 404) << path;
+    EXPECT_EQ(r->body.find("root:"), std::string::npos) << path;
+  }
+  EXPECT_EQ(client.Post("/status", "", "text/plain")->status, 404);
+  EXPECT_EQ(client.Post("/params", "not json", "application/json")->status,
+            400);
+  EXPECT_EQ(client.Get("/mesh?v=banana")->status, 400);
+  // A page of another site whose name resolves to 127.0.0.1 is refused.
+  httplib::Headers other{
+      {"Host", "evil.example:" + std::to_string(view.port())}};
+  EXPECT_EQ(client.Get("/status", other)->status, 403);
+  EXPECT_EQ(view.stop(), 0);
+}
+
+TEST_F(View, BuildsTheFileAndBuildsItAgainWhenItIsSaved) {
+  write("tree.ls", kTree);
+  ViewProcess view(dir_, "tree.ls");
+  const Json first = view.wait_for(built);
+  EXPECT_EQ(first["report"]["printable"], true);
+  EXPECT_EQ(first["report"]["segments"], 8);  // F[+A][-A]FA at n = 2
+  EXPECT_GT(first["skeleton"].get<int>(), 0);
+  EXPECT_EQ(first["controls"]["bed_mm"], Json::parse("[220, 220, 250]"));
+  EXPECT_EQ(first["report"]["fits_bed"], true);
+  const auto mesh =
+      view.client().Get("/mesh?v=" + std::to_string(first["model"].get<int>()));
+  ASSERT_TRUE(mesh);
+  EXPECT_EQ(mesh->status, 200);
+  EXPECT_EQ(mesh->body.substr(0, 4), "LSM1");
+  // Saved with n = 3: built again, without asking.
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  std::string three(kTree);
+  three[4] = '3';  // n = 3
+  write("tree.ls", three);
+  const Json second = view.wait_for(
+      [&](const Json& s) { return built(s) && s["model"] != first["model"]; });
+  EXPECT_EQ(second["report"]["segments"], 26);
+  // An old version is gone, not served as if current.
+  EXPECT_EQ(view.client()
+                .Get("/mesh?v=" + std::to_string(first["model"].get<int>()))
+                ->status,
+            410);
+}
+
+TEST_F(View, ShowsAnErrorAtItsLineAndKeepsTheLastModel) {
+  write("tree.ls", kTree);
+  ViewProcess view(dir_, "tree.ls");
+  const Json good = view.wait_for(built);
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  write("tree.ls", std::string(kTree) + "A \u2192 F[+A\n");
+  const Json bad =
+      view.wait_for([](const Json& s) { return !s["error"].is_null(); });
+  EXPECT_EQ(bad["error"]["line"], 7);
+  EXPECT_NE(bad["error"]["message"].get<std::string>().find("'['"),
+            std::string::npos)
+      << bad.dump();
+  EXPECT_NE(bad["error"]["text"].get<std::string>().find("tree.ls:7:"),
+            std::string::npos);
+  EXPECT_EQ(bad["model"], good["model"]);  // the last good model stays
+  // Mended: the error goes and a model comes.
+  write("tree.ls", kTree);
+  view.wait_for(
+      [&](const Json& s) { return built(s) && s["model"] != good["model"]; });
+}
+
+TEST_F(View, BuildsWhatTheControlsAskCancellingABuildInFlight) {
+  use_bush();
+  ViewProcess view(dir_, "bush.ls", {"-n", "2"});
+  const Json first = view.wait_for(built);
+  // A slow build (n = 6) asked for and, before it ends, a quick one: the
+  // slow one is cancelled and never shown.
+  auto& client = view.client();
+  ASSERT_EQ(client.Post("/params", R"({"n": "6"})", "application/json")->status,
+            202);
+  view.wait_for([](const Json& s) {
+    return s["stage"] != "done" && s["stage"] != "parse" &&
+           s["stage"] != "skeleton";
+  });
+  ASSERT_EQ(
+      client
+          .Post("/params", R"({"n": "3", "wall": "1mm"})", "application/json")
+          ->status,
+      202);
+  const Json last = view.wait_for(
+      [&](const Json& s) { return built(s) && s["model"] != first["model"]; });
+  EXPECT_EQ(last["cancelled"].get<int>(), first["cancelled"].get<int>() + 1);
+  EXPECT_EQ(last["builds"].get<int>(), first["builds"].get<int>() + 1);
+  EXPECT_EQ(last["controls"]["n"], 3);
+  EXPECT_EQ(last["controls"]["wall_mm"], 1.0);
+  EXPECT_EQ(last["report"]["segments"], bush_segments(3));
+  EXPECT_NE(last["command"].get<std::string>().find("-n 3"), std::string::npos);
+  EXPECT_NE(last["command"].get<std::string>().find("--wall 1mm"),
+            std::string::npos);
+  // Requests from several clients at once, then one more: each is
+  // accepted, none is queued behind another (a request replaces the one
+  // not yet drawn), and the last is what is built.
+  std::vector<std::thread> clients;
+  std::atomic<int> accepted{0};
+  for (int i = 0; i < 8; ++i) {
+    clients.emplace_back([&, i] {
+      httplib::Client other("127.0.0.1", view.port());
+      const auto r = other.Post(
+          "/params", "{\"n\": \"" + std::to_string(1 + i % 3) + "\"}",
+          "application/json");
+      if (r && r->status == 202) ++accepted;
+    });
+  }
+  for (std::thread& thread : clients) thread.join();
+  EXPECT_EQ(accepted, 8);
+  ASSERT_EQ(client.Post("/params", R"({"n": "4"})", "application/json")->status,
+            202);
+  const Json newest = view.wait_for([&](const Json& s) {
+    return built(s) && s["controls"]["n"] == 4 && s["model"] != last["model"];
+  });
+  const int ended = newest["builds"].get<int>() +
+                    newest["cancelled"].get<int>() - last["builds"].get<int>() -
+                    last["cancelled"].get<int>();
+  EXPECT_GE(ended, 1);
+  EXPECT_LE(ended, 9);
+  EXPECT_TRUE(newest["error"].is_null()) << newest.dump();
+  EXPECT_EQ(newest["report"]["segments"], bush_segments(4));
+}
+
+TEST_F(View, DrawsTheBedItIsGivenAndSaysWhetherTheModelFits) {
+  write("tree.ls", kTree);  // 40 mm tall
+  ViewProcess view(dir_, "tree.ls", {"--bed", "30x30x30mm"});
+  const Json shown = view.wait_for(built);
+  EXPECT_EQ(shown["controls"]["bed_mm"], Json::parse("[30, 30, 30]"));
+  EXPECT_EQ(shown["report"]["fits_bed"], false);
+  EXPECT_NE(shown["command"].get<std::string>().find("--bed 30x30x30mm"),
+            std::string::npos);
+  EXPECT_EQ(view.stop(), 0);
+  const auto bad = run_command(lsolid() + " view tree.ls --bed 30x30", dir_);
+  EXPECT_EQ(bad.exit_code, 2) << bad.out;
+  EXPECT_NE(bad.err.find("--bed"), std::string::npos) << bad.err;
+}
+
+TEST_F(View, KeepsTheModelWhenTheFileIsDeletedAndBuildsItWhenItIsBack) {
+  write("tree.ls", kTree);
+  ViewProcess view(dir_, "tree.ls");
+  const Json good = view.wait_for(built);
+  std::filesystem::remove(dir_ / "tree.ls");
+  const Json gone =
+      view.wait_for([](const Json& s) { return !s["error"].is_null(); });
+  EXPECT_NE(gone["error"]["message"].get<std::string>().find("gone"),
+            std::string::npos);
+  EXPECT_EQ(gone["model"], good["model"]);
+  write("tree.ls", kTree);
+  view.wait_for(
+      [&](const Json& s) { return built(s) && s["model"] != good["model"]; });
+}
+
+TEST_F(View, DownloadsTheModelShown) {
+  write("tree.ls", kTree);
+  ViewProcess view(dir_, "tree.ls");
+  const Json shown = view.wait_for(built);
+  auto& client = view.client();
+  const auto stl = client.Get("/download/model.stl");
+  ASSERT_TRUE(stl);
+  EXPECT_EQ(stl->status, 200);
+  EXPECT_EQ(stl->get_header_value("Content-Disposition"),
+            "attachment; filename=\"tree.stl\"");
+  std::ofstream(dir_ / "got.stl", std::ios::binary) << stl->body;
+  const auto checked = run_command(lsolid() + " check --json got.stl", dir_);
+  EXPECT_EQ(checked.exit_code, 0) << checked.out;
+  EXPECT_EQ(Json::parse(checked.out)["triangles"],
+            shown["report"]["triangles"]);
+  // The command line the page shows writes the same bytes.
+  const std::string command = shown["command"].get<std::string>();
+  EXPECT_EQ(command, "lsolid tree.ls -o tree.stl");
+  const auto built_here =
+      run_command(lsolid() + " tree.ls -q -o cli.stl", dir_);
+  ASSERT_EQ(built_here.exit_code, 0) << built_here.err;
+  EXPECT_EQ(testing::read_text(dir_ / "cli.stl"), stl->body);
+  const auto threemf = client.Get("/download/model.3mf");
+  ASSERT_TRUE(threemf);
+  EXPECT_EQ(threemf->body.substr(0, 2), "PK");  // a zip
+  const auto scad = client.Get("/download/model.scad");
+  ASSERT_TRUE(scad);
+  EXPECT_NE(scad->body.find("module lsolid_tree()"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace lsolid

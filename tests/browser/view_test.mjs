@@ -178,6 +178,22 @@ test('shows the skeleton at once, then the build\'s progress', async () => {
     assert.equal(await other.isVisible('#progress'), true);
     assert.match(await other.textContent('#stage'), /^(skeleton|parts|union)$/);
     assert.equal(await other.textContent('#verdict'), 'building…');
+    // A quick model (n = 2), then n = 7 again: its skeleton is drawn over
+    // the n = 2 model, faded, while the solid is built.
+    await other.fill('#n', '2');
+    await other.dispatchEvent('#n', 'change');
+    await other.waitForFunction(
+      () => Number(document.body.dataset.model || 0) > 0 &&
+        document.body.dataset.faded === '0', null, { timeout: 60000 });
+    const quick = await other.evaluate(() => document.body.dataset.model);
+    const skeleton = await other.evaluate(() => document.body.dataset.skeleton);
+    await other.fill('#n', '7');
+    await other.dispatchEvent('#n', 'change');
+    await other.waitForFunction(
+      (s) => document.body.dataset.skeleton !== s, skeleton, { timeout: 30000 });
+    assert.equal(await other.evaluate(() => document.body.dataset.model), quick);
+    assert.equal(await other.evaluate(() => document.body.dataset.faded), '1');
+    assert.equal(await other.isVisible('#progress'), true);
   } finally {
     await other.close();
     assert.equal(await bush.stop(), 0, bush.log());

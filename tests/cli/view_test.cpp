@@ -48,6 +48,39 @@ int free_port() {
   return ntohs(address.sin_port);
 }
 
+// A connection that sent `GET path` and read the status line of the
+// answer (empty if none came within five seconds); closed when dropped.
+class RawRequest {
+ public:
+  RawRequest(int port, const std::string& path)
+      : fd_(::socket(AF_INET, SOCK_STREAM, 0)) {
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    address.sin_port = htons(static_cast<std::uint16_t>(port));
+    timeval timeout{.tv_sec = 5, .tv_usec = 0};
+    ::setsockopt(fd_, SOL_SOCKET, SO_RCVTIMEO, &timeout, sizeof(timeout));
+    if (::connect(fd_, reinterpret_cast<sockaddr*>(&address),
+                  sizeof(address)) != 0) {
+      return;
+    }
+    const std::string request =
+        "GET " + path + " HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) +
+        "\r\n\r\n";
+    if (::send(fd_, request.data(), request.size(), MSG_NOSIGNAL) < 0) return;
+    char c = 0;
+    while (::recv(fd_, &c, 1, 0) == 1 && c != '\n') status_line_ += c;
+  }
+  ~RawRequest() { ::close(fd_); }
+  RawRequest(const RawRequest&) = delete;
+  RawRequest& operator=(const RawRequest&) = delete;
+  const std::string& status_line() const { return status_line_; }
+
+ private:
+  int fd_;
+  std::string status_line_;
+};
+
 // `lsolid view` running in the background, stopped as Ctrl-C stops it.
 class ViewProcess {
  public:
@@ -193,6 +226,61 @@ TEST_F(View, ServesItsPageAndNothingElse) {
   EXPECT_EQ(view.stop(), 0);
 }
 
+TEST_F(View, RefusesOtherSitesAndBoundsWhatItHolds) {
+  write("tree.ls", kTree);
+  ViewProcess view(dir_, "tree.ls");
+  const Json first = view.wait_for(built);
+  auto& client = view.client();
+  const std::string own = "http://127.0.0.1:" + std::to_string(view.port());
+  // A page of another site may send a form or open an event stream to
+  // 127.0.0.1; its Origin names it, and it is refused.
+  const httplib::Headers evil{{"Origin", "http://evil.example"}};
+  EXPECT_EQ(
+      client.Post("/params", evil, R"({"n": "1"})", "application/json")->status,
+      403);
+  EXPECT_EQ(client.Get("/events", evil)->status, 403);
+  // A body that is not JSON is refused before it is read as such (a
+  // browser sends JSON across sites only after asking, and is refused).
+  EXPECT_EQ(client.Post("/params", R"({"n": "1"})", "text/plain")->status, 415);
+  // A body larger than any the page sends is refused.
+  EXPECT_EQ(
+      client
+          .Post("/params", "{\"n\": \"" + std::string(1 << 20, '1') + "\"}",
+                "application/json")
+          ->status,
+      413);
+  EXPECT_EQ(view.status()["builds"], first["builds"]);  // nothing was built
+  // The page's own requests pass.
+  const httplib::Headers mine{{"Origin", own}};
+  EXPECT_EQ(
+      client.Post("/params", mine, R"({"n": "1"})", "application/json")->status,
+      202);
+  view.wait_for(
+      [](const Json& s) { return built(s) && s["controls"]["n"] == 1; });
+  // Event streams are bounded, and the rest of the server answers while
+  // they are all open.
+  {
+    std::vector<std::unique_ptr<RawRequest>> streams;
+    for (int i = 0; i < 16; ++i) {
+      streams.push_back(std::make_unique<RawRequest>(view.port(), "/events"));
+      ASSERT_EQ(streams.back()->status_line(), "HTTP/1.1 200 OK\r") << i;
+    }
+    EXPECT_EQ(RawRequest(view.port(), "/events").status_line(),
+              "HTTP/1.1 503 Service Unavailable\r");
+    const auto status = client.Get("/status");
+    ASSERT_TRUE(status);
+    EXPECT_EQ(status->status, 200);
+  }
+  // Closed, their threads are freed within the streams' beat (2 s).
+  std::string again;
+  for (int i = 0; i < 100 && again != "HTTP/1.1 200 OK\r"; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    again = RawRequest(view.port(), "/events").status_line();
+  }
+  EXPECT_EQ(again, "HTTP/1.1 200 OK\r");
+  EXPECT_EQ(view.stop(), 0);
+}
+
 TEST_F(View, BuildsTheFileAndBuildsItAgainWhenItIsSaved) {
   write("tree.ls", kTree);
   ViewProcess view(dir_, "tree.ls");
@@ -239,8 +327,22 @@ TEST_F(View, ShowsAnErrorAtItsLineAndKeepsTheLastModel) {
   EXPECT_EQ(bad["model"], good["model"]);  // the last good model stays
   // Mended: the error goes and a model comes.
   write("tree.ls", kTree);
-  view.wait_for(
+  const Json mended = view.wait_for(
       [&](const Json& s) { return built(s) && s["model"] != good["model"]; });
+  // A control's bad value is an error of its own; the command line shown
+  // stays the one that builds the model shown.
+  ASSERT_EQ(
+      view.client()
+          .Post("/params", R"({"n": "3", "wall": "-5"})", "application/json")
+          ->status,
+      202);
+  const Json refused =
+      view.wait_for([](const Json& s) { return !s["error"].is_null(); });
+  EXPECT_NE(refused["error"]["text"].get<std::string>().find("--wall"),
+            std::string::npos)
+      << refused.dump();
+  EXPECT_EQ(refused["model"], mended["model"]);
+  EXPECT_EQ(refused["command"], mended["command"]);
 }
 
 TEST_F(View, BuildsWhatTheControlsAskCancellingABuildInFlight) {

@@ -1,10 +1,11 @@
 // Copyright 2026 the lsolid authors
 // SPDX-License-Identifier: MIT
 //
-// The viewer's builds: one worker thread runs them one at a time, newest
-// request first; a watcher thread polls the file. A build reports its
+// The viewer's builds: a drawer thread reads the file and draws the
+// skeleton of the newest request, a builder thread makes its solid, one at
+// a time, and a watcher thread polls the file. A build reports its
 // progress at each stage and inside the long ones (the union after each
-// boolean, the decimation as it goes); there the worker checks whether a
+// boolean, the decimation as it goes); there the builder checks whether a
 // newer request came and, if so, abandons the build by throwing Cancelled
 // through the library, which holds its state in values and releases it
 // on the way out.
@@ -13,6 +14,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <set>
 #include <system_error>
 #include <utility>
 
@@ -125,6 +128,29 @@ Json current_error() {
   }
 }
 
+// The --define list a build uses: the command line's, in its order (a
+// value may use a constant defined before it), with the page's values in
+// place of theirs, and the page's others after them.
+std::vector<std::string> merged_defines(
+    const std::vector<std::string>& given,
+    const std::map<std::string, std::string>& page) {
+  std::vector<std::string> out;
+  std::set<std::string> placed;
+  for (const std::string& define : given) {
+    const std::string name = define.substr(0, define.find('='));
+    const auto it = page.find(name);
+    if (it == page.end()) {
+      out.push_back(define);
+    } else if (placed.insert(name).second) {
+      out.push_back(name + "=" + it->second);
+    }
+  }
+  for (const auto& [name, value] : page) {
+    if (placed.count(name) == 0) out.push_back(name + "=" + value);
+  }
+  return out;
+}
+
 // A word of a command line, quoted for a POSIX shell where it must be.
 std::string shell_word(const std::string& word) {
   const bool plain = !word.empty() &&
@@ -148,6 +174,7 @@ std::string shell_word(const std::string& word) {
 // A skeleton drawn, with what the solid is to be built with.
 struct ViewBuilder::Job {
   std::uint64_t generation = 0;
+  std::string command;  // the command line that builds the same
   lsys::Grammar grammar;
   lsys::Skeleton skeleton;
   SolidOptions options;
@@ -191,7 +218,6 @@ void ViewBuilder::request(ViewParams params) {
   {
     const std::lock_guard lock(mutex_);
     params_ = std::move(params);
-    status_.command = command_line(params_);
     ++wanted_;
     publish_locked();
   }
@@ -266,6 +292,7 @@ void ViewBuilder::build_jobs() {
       job_ready_.wait(lock, [&] { return stopping_ || job_ != nullptr; });
       if (stopping_) return;
       job = std::move(job_);
+      if (job->generation != wanted_) continue;  // a newer one is being drawn
     }
     build(std::move(*job));
   }
@@ -315,17 +342,14 @@ std::string ViewBuilder::command_line(const ViewParams& params) const {
   option("-n", params.derivation_length ? params.derivation_length
                                         : input_.derivation_length);
   option("--seed", params.seed ? params.seed : input_.seed);
-  std::map<std::string, std::string> defines;
-  for (const std::string& define : input_.defines) {
-    const std::size_t equals = define.find('=');
-    defines[define.substr(0, equals)] =
-        equals == std::string::npos ? "" : define.substr(equals + 1);
-  }
-  for (const auto& [name, value] : params.defines) defines[name] = value;
-  for (const auto& [name, value] : defines) {
+  for (const std::string& define :
+       merged_defines(input_.defines, params.defines)) {
     words.emplace_back("--define");
-    words.push_back(name + "=" + value);
+    words.push_back(define);
   }
+  option("--max-segments", input_.max_segments);
+  option("--max-modules", input_.max_modules);
+  option("--max-memory", input_.max_memory);
   if (input_.dialect) option("--dialect", input_.dialect);
   if (!input_.system.empty()) option("--system", input_.system);
   if (!input_.view_file.empty()) option("--view", input_.view_file);
@@ -379,9 +403,7 @@ void ViewBuilder::draw(std::uint64_t generation, const ViewParams& params) {
     input.derivation_length = params.derivation_length;
   }
   if (params.seed) input.seed = params.seed;
-  for (const auto& [name, value] : params.defines) {
-    input.defines.push_back(name + "=" + value);
-  }
+  input.defines = merged_defines(input_.defines, params.defines);
   PrintInput print = print_;
   if (params.size) {
     print.size = params.size;
@@ -441,6 +463,7 @@ void ViewBuilder::draw(std::uint64_t generation, const ViewParams& params) {
     std::string skeleton = encode_skeleton(scaled.skeleton);
     auto job =
         std::make_unique<Job>(Job{.generation = generation,
+                                  .command = command_line(params),
                                   .grammar = std::move(grammar),
                                   .skeleton = std::move(drawn),
                                   .options = {.derivation = derivation,
@@ -471,10 +494,12 @@ void ViewBuilder::build(Job job) {
   const auto cancelled = [&] { return stopping_ || wanted_ != generation; };
   auto last_told = std::chrono::steady_clock::now() - kProgressInterval;
   job.options.progress = [&](std::string_view stage, double fraction) {
-    if (cancelled()) throw Cancelled{};
     const auto now = std::chrono::steady_clock::now();
     {
+      // Under the lock: a newer request's stage or error, published in
+      // between, is never overwritten by this build's.
       const std::lock_guard lock(mutex_);
+      if (cancelled()) throw Cancelled{};
       if (status_.stage == stage && now - last_told < kProgressInterval &&
           fraction < 1.0) {
         return;
@@ -514,6 +539,7 @@ void ViewBuilder::build(Job job) {
       model_bytes_ = std::move(bytes);
       status_.model = status_.version + 1;
       status_.report = std::move(report);
+      status_.command = std::move(job.command);
       ++status_.builds;
       status_.stage = "done";
       status_.fraction = 1.0;

@@ -20,9 +20,7 @@ void run_view(const ViewCommand& command) {
   if (!std::filesystem::is_regular_file(command.input.file)) {
     throw IoError(command.input.file + ": no such file");
   }
-  const bool loopback =
-      command.host == "127.0.0.1" || command.host == "localhost";
-  if (!loopback) {
+  if (!view::is_loopback(command.host)) {
     std::fprintf(stderr,
                  "warning: serving on %s: anyone who can reach this address "
                  "can see the model and make lsolid build\n",

@@ -23,7 +23,13 @@
 namespace lsolid::cli::view {
 namespace {
 
-constexpr int kEventWaitMs = 15000;  // then a comment keeps the stream open
+// A stream writes at least this often (a comment when nothing changed), so
+// that a closed page is noticed and its thread freed within this time.
+constexpr int kEventWaitMs = 2000;
+// The largest request body: the controls are a few hundred bytes.
+constexpr std::size_t kMaxBodyBytes = 64 * 1024;
+// The server's threads: the event streams and as many more for the rest.
+constexpr std::size_t kThreads = kMaxStreams + 8;
 
 Json status_json(const ViewStatus& s) {
   return Json{
@@ -79,11 +85,31 @@ std::string model_file(const ViewModel& model, MeshFormat format,
 
 }  // namespace
 
+bool is_loopback(std::string_view host) {
+  return host == "localhost" || host == "::1" || host == "[::1]" ||
+         host.substr(0, 4) == "127.";
+}
+
 ViewServer::ViewServer(ViewBuilder& builder, ServerOptions options)
     : builder_(builder),
       options_(std::move(options)),
       server_(std::make_unique<httplib::Server>()) {
+  server_->new_task_queue = [] { return new httplib::ThreadPool(kThreads); };
+  server_->set_payload_max_length(kMaxBodyBytes);
   add_routes();
+}
+
+void ViewServer::allow_hosts() {
+  const std::string& host = options_.host;
+  if (host == "0.0.0.0" || host == "::" || host.empty()) return;
+  const std::string port = ":" + std::to_string(port_);
+  const bool ipv6 = host.find(':') != std::string::npos;
+  allowed_hosts_.insert((ipv6 ? "[" + host + "]" : host) + port);
+  if (is_loopback(host)) {
+    for (const char* name : {"127.0.0.1", "localhost", "[::1]"}) {
+      allowed_hosts_.insert(name + port);
+    }
+  }
 }
 
 ViewServer::~ViewServer() = default;
@@ -95,16 +121,19 @@ int ViewServer::bind() {
                     std::to_string(options_.port));
     }
     port_ = options_.port;
+    allow_hosts();
     return port_;
   }
   for (int port = kDefaultPort; port < kDefaultPort + 10; ++port) {
     if (server_->bind_to_port(options_.host.c_str(), port)) {
       port_ = port;
+      allow_hosts();
       return port_;
     }
   }
   port_ = server_->bind_to_any_port(options_.host.c_str());
   if (port_ <= 0) throw IoError("cannot listen on " + options_.host);
+  allow_hosts();
   return port_;
 }
 
@@ -114,17 +143,20 @@ void ViewServer::stop() { server_->stop(); }
 
 void ViewServer::add_routes() {
   httplib::Server& s = *server_;
-  // On the loopback address only requests for it are answered: a page of
+  // Only requests for this server's own name are answered: a page of
   // another site whose name was made to resolve to 127.0.0.1 (DNS
-  // rebinding) names that site in its Host header, and is refused.
+  // rebinding) names that site in its Host header. And only those the page
+  // of another site did not send: a browser names the sending page's
+  // origin on a cross-site request (a form's POST, an EventSource), which
+  // would otherwise pass, as it names this server as its Host.
   s.set_pre_routing_handler(
       [this](const httplib::Request& request, httplib::Response& response) {
-        if (options_.host != "127.0.0.1" && options_.host != "localhost") {
-          return httplib::Server::HandlerResponse::Unhandled;
-        }
         const std::string host = request.get_header_value("Host");
-        const std::string port = ":" + std::to_string(port_);
-        if (host == "127.0.0.1" + port || host == "localhost" + port) {
+        const std::string origin = request.get_header_value("Origin");
+        const bool host_ok =
+            allowed_hosts_.empty() || allowed_hosts_.count(host) > 0;
+        const bool origin_ok = origin.empty() || origin == "http://" + host;
+        if (host_ok && origin_ok) {
           return httplib::Server::HandlerResponse::Unhandled;
         }
         response.status = 403;
@@ -164,10 +196,18 @@ void ViewServer::add_routes() {
                   "application/json");
   });
   s.Get("/events", [this](const httplib::Request&, httplib::Response& r) {
+    if (streams_.fetch_add(1) >= kMaxStreams) {
+      streams_.fetch_sub(1);
+      r.status = 503;
+      r.set_content("too many pages follow this model; close one\n",
+                    "text/plain");
+      return;
+    }
     r.set_header("Cache-Control", "no-cache");
     r.set_chunked_content_provider(
-        "text/event-stream", [this, seen = std::uint64_t{0}](
-                                 std::size_t, httplib::DataSink& sink) mutable {
+        "text/event-stream",
+        [this, seen = std::uint64_t{0}](std::size_t,
+                                        httplib::DataSink& sink) mutable {
           const ViewStatus status =
               builder_.wait_for_change(seen, kEventWaitMs);
           if (builder_.stopping()) {
@@ -183,7 +223,8 @@ void ViewServer::add_routes() {
                       "\n\n";
           }
           return sink.write(message.data(), message.size());
-        });
+        },
+        [this](bool) { streams_.fetch_sub(1); });
   });
   const auto binary = [this, &s](const char* path, bool mesh) {
     s.Get(path,
@@ -232,38 +273,46 @@ void ViewServer::add_routes() {
   download("/download/model.3mf", MeshFormat::ThreeMf, ".3mf", "model/3mf");
   download("/download/model.scad", MeshFormat::Scad, ".scad",
            "text/plain; charset=utf-8");
-  s.Post(
-      "/params", [this](const httplib::Request& request, httplib::Response& r) {
-        Json body;
-        try {
-          body = Json::parse(request.body);
-        } catch (const std::exception&) {
-          r.status = 400;
-          r.set_content("expected a JSON object\n", "text/plain");
-          return;
-        }
-        if (!body.is_object()) {
-          r.status = 400;
-          return;
-        }
-        ViewParams params{.derivation_length = text_of(body, "n"),
-                          .seed = text_of(body, "seed"),
-                          .size = text_of(body, "size"),
-                          .wall = text_of(body, "wall"),
-                          .tolerance = text_of(body, "tolerance"),
-                          .base = text_of(body, "base")};
-        if (body.contains("defines") && body["defines"].is_object()) {
-          for (const auto& [name, value] : body["defines"].items()) {
-            params.defines[name] =
-                value.is_string() ? value.get<std::string>() : value.dump();
-          }
-        }
-        builder_.request(std::move(params));
-        r.status = 202;
-        r.set_content(status_json(builder_.status())
-                          .dump(-1, ' ', false, Json::error_handler_t::replace),
-                      "application/json");
-      });
+  s.Post("/params", [this](const httplib::Request& request,
+                           httplib::Response& r) {
+    // JSON only: a browser sends it across sites only after asking
+    // (a preflight this server never grants).
+    if (request.get_header_value("Content-Type").rfind("application/json", 0) !=
+        0) {
+      r.status = 415;
+      r.set_content("expected application/json\n", "text/plain");
+      return;
+    }
+    Json body;
+    try {
+      body = Json::parse(request.body);
+    } catch (const std::exception&) {
+      r.status = 400;
+      r.set_content("expected a JSON object\n", "text/plain");
+      return;
+    }
+    if (!body.is_object()) {
+      r.status = 400;
+      return;
+    }
+    ViewParams params{.derivation_length = text_of(body, "n"),
+                      .seed = text_of(body, "seed"),
+                      .size = text_of(body, "size"),
+                      .wall = text_of(body, "wall"),
+                      .tolerance = text_of(body, "tolerance"),
+                      .base = text_of(body, "base")};
+    if (body.contains("defines") && body["defines"].is_object()) {
+      for (const auto& [name, value] : body["defines"].items()) {
+        params.defines[name] =
+            value.is_string() ? value.get<std::string>() : value.dump();
+      }
+    }
+    builder_.request(std::move(params));
+    r.status = 202;
+    r.set_content(status_json(builder_.status())
+                      .dump(-1, ' ', false, Json::error_handler_t::replace),
+                  "application/json");
+  });
 }
 
 }  // namespace lsolid::cli::view

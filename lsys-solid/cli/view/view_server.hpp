@@ -2,9 +2,12 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <atomic>
 #include <filesystem>
 #include <memory>
+#include <set>
 #include <string>
+#include <string_view>
 
 #include "view/view_builder.hpp"
 
@@ -27,14 +30,24 @@ struct ServerOptions {
 /// The port the viewer tries first.
 inline constexpr int kDefaultPort = 8400;
 
+/// The event streams served at once: each holds one of the server's
+/// threads while it is open.
+inline constexpr int kMaxStreams = 16;
+
+/// Whether `host` is a loopback address (127.0.0.0/8, ::1, localhost):
+/// the machine's own programs only.
+[[nodiscard]] bool is_loopback(std::string_view host);
+
 /// The viewer's HTTP server: its page and assets, three.js, the builder's
 /// status (`/status`, and as server-sent events on `/events`), the
 /// skeleton and the mesh in binary (`/skeleton?v=`, `/mesh?v=`), the model
 /// as a file (`/download/model.stl`, `.3mf`, `.scad`) and the page's
 /// controls (`POST /params`). Nothing else: no path names a file, so no
-/// path can reach one. Bound to the loopback address, it answers only
-/// requests addressed to it by that name (a page of another site that
-/// rebinds its name to 127.0.0.1 is refused).
+/// path can reach one. Bound to one address, it answers only requests
+/// addressed to it by that name (a page of another site that rebinds its
+/// name to 127.0.0.1 is refused), and only those a page of another origin
+/// did not send (their `Origin` header names another site). At most
+/// kMaxStreams pages follow the events at once.
 class ViewServer {
  public:
   /// @throws IoError when three.js is not in `options.three_dir`.
@@ -53,10 +66,15 @@ class ViewServer {
 
  private:
   void add_routes();
+  void allow_hosts();
 
   ViewBuilder& builder_;
   ServerOptions options_;
   int port_ = 0;
+  // The Host headers answered (name:port); empty when bound to every
+  // address, whose names the server cannot know.
+  std::set<std::string> allowed_hosts_;
+  std::atomic<int> streams_{0};  // event streams open
   std::unique_ptr<httplib::Server> server_;
 };
 

@@ -30,6 +30,14 @@
 
   // The bed: a 10 mm grid of the printer's size (`--bed`), centred on the
   // origin where lsolid places the model, and the build volume's edges.
+  // three.js frees a geometry's and a material's GPU buffers only when
+  // told: every object replaced is disposed of.
+  function dispose(object) {
+    object.traverse((o) => {
+      if (o.geometry) o.geometry.dispose();
+      if (o.material) o.material.dispose();
+    });
+  }
   let bedObject = null;
   let bedSize = '';
   function showBed(size) {
@@ -39,7 +47,7 @@
     bedSize = key;
     if (bedObject) {
       scene.remove(bedObject);
-      bedObject.traverse((o) => { if (o.geometry) o.geometry.dispose(); });
+      dispose(bedObject);
     }
     bedObject = new THREE.Group();
     const x0 = -width / 2;
@@ -174,7 +182,10 @@
       group.add(new THREE.Mesh(geometry, new THREE.MeshLambertMaterial({
         vertexColors: THREE.VertexColors, side: THREE.DoubleSide })));
     }
-    if (skeletonObject) scene.remove(skeletonObject);
+    if (skeletonObject) {
+      scene.remove(skeletonObject);
+      dispose(skeletonObject);
+    }
     skeletonObject = group;
     scene.add(group);
     applyVisibility();
@@ -204,8 +215,10 @@
     const positions = new Float32Array(triangles * 9);
     const colors = new Float32Array(triangles * 9);
     const warn = new THREE.Color('#e23a2e');
+    const base = palette.map(colorOf);
+    const c = new THREE.Color();
     for (let t = 0; t < triangles; ++t) {
-      const c = colorOf(palette[colorIndex[t]] || palette[0]).clone();
+      c.copy(base[colorIndex[t] % base.length]);
       if (shade && overhang[t]) c.lerp(warn, 0.75);
       for (let k = 0; k < 3; ++k) {
         const v = corners[t * 3 + k];
@@ -225,7 +238,7 @@
       vertexColors: THREE.VertexColors }));
     if (modelObject) {
       scene.remove(modelObject);
-      modelObject.geometry.dispose();
+      dispose(modelObject);
     }
     modelObject = mesh;
     scene.add(mesh);
@@ -236,9 +249,23 @@
     }
   }
 
+  // A skeleton newer than the model (the file was saved, a control moved,
+  // and the solid is on its way) is shown over the old model, faded.
+  let skeletonVersion = 0;
+  let modelVersion = 0;
   function applyVisibility() {
-    const showSkeletonAlways = $('show-skeleton').checked;
-    if (skeletonObject) skeletonObject.visible = showSkeletonAlways || !modelObject;
+    const newer = skeletonObject !== null && skeletonVersion > modelVersion;
+    if (skeletonObject) {
+      skeletonObject.visible = $('show-skeleton').checked || !modelObject || newer;
+    }
+    if (modelObject) {
+      const m = modelObject.material;
+      m.transparent = newer;
+      m.opacity = newer ? 0.25 : 1;
+      m.depthWrite = !newer;
+      m.needsUpdate = true;
+    }
+    document.body.dataset.faded = newer ? '1' : '0';
     redraw();
   }
   $('show-skeleton').addEventListener('change', applyVisibility);
@@ -258,7 +285,11 @@
     const verdict = $('verdict');
     const list = $('report');
     list.textContent = '';
-    if (!report) return;
+    if (!report) {
+      verdict.textContent = 'no model yet';
+      verdict.className = 'verdict not-printable';
+      return;
+    }
     verdict.textContent = report.printable ? 'printable' : 'NOT printable';
     verdict.className = 'verdict ' + (report.printable ? 'printable' : 'not-printable');
     const min = report.bounds.min;
@@ -327,6 +358,13 @@
     }
     for (const c of constants) {
       const inputs = constantInputs[c.name];
+      // A value the file moved out of the slider's range widens it.
+      if (c.value < Number(inputs.range.min) || c.value > Number(inputs.range.max)) {
+        inputs.range.min = c.min;
+        inputs.range.max = c.max;
+        inputs.range.step = c.step;
+        inputs.number.step = c.step;
+      }
       if (inputs.number !== active && inputs.range !== active) {
         inputs.number.value = c.value;
         inputs.range.value = c.value;
@@ -396,14 +434,19 @@
   $('controls').addEventListener('submit', (e) => e.preventDefault());
 
   // ---- the status, as the server tells it
-  let skeletonShown = 0;
-  let modelShown = 0;
+  let skeletonAsked = 0;
+  let modelAsked = 0;
+  let applied = 0;
   let palette = ['#7b4a2a'];
   async function fetchBinary(path, version) {
     const response = await fetch(path + '?v=' + version);
     return response.ok ? response.arrayBuffer() : null;
   }
   async function update(status) {
+    // The first /status and the events race: an older snapshot than one
+    // applied would undo it.
+    if (status.version <= applied) return;
+    applied = status.version;
     document.body.dataset.version = status.version;
     if (status.controls) {
       palette = status.controls.palette || palette;
@@ -421,19 +464,27 @@
     const error = $('error');
     error.hidden = !status.error;
     error.textContent = status.error ? status.error.text : '';
-    if (status.skeleton && status.skeleton !== skeletonShown) {
-      skeletonShown = status.skeleton;
+    // A version replaced while it was fetched is answered 410 Gone and
+    // not drawn; the snapshot that replaced it comes next.
+    if (status.skeleton && status.skeleton !== skeletonAsked) {
+      skeletonAsked = status.skeleton;
       const buffer = await fetchBinary('/skeleton', status.skeleton);
-      if (buffer) showSkeleton(buffer, palette);
-      document.body.dataset.skeleton = skeletonShown;
+      if (buffer) {
+        skeletonVersion = status.skeleton;
+        showSkeleton(buffer, palette);
+        document.body.dataset.skeleton = status.skeleton;
+      }
     }
-    if (status.model && status.model !== modelShown) {
-      modelShown = status.model;
+    if (status.model && status.model !== modelAsked) {
+      modelAsked = status.model;
       const buffer = await fetchBinary('/mesh', status.model);
-      if (buffer) showMesh(buffer, palette);
+      if (buffer) {
+        modelVersion = status.model;
+        showMesh(buffer, palette);
+        document.body.dataset.model = status.model;
+      }
     }
     if (!building) showReport(status.report);
-    document.body.dataset.model = modelShown;
   }
   let queue = Promise.resolve();
   function receive(status) {

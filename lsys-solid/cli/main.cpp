@@ -120,9 +120,10 @@ int main(int argc, char** argv) {
                        "the printer's build volume, e.g. 220x220x250mm, drawn "
                        "as the bed; the report says whether the model fits "
                        "(default 220x220x250mm)");
-  view_app->add_option("--host", view.host,
-                       "the address to listen on (default 127.0.0.1; any "
-                       "other serves the network)");
+  view_app->add_option(
+      "--host", view.host,
+      "the address to listen on (default 127.0.0.1; any but a loopback "
+      "address serves the network)");
   view_app
       ->add_option("--port", view.port,
                    "the port (default the first free one from 8400)")

@@ -318,16 +318,12 @@ void run_build(const BuildCommand& command) {
                over.area_mm2,
                over.needs_supports ? "supports needed" : "no supports needed");
   }
-  const glm::dvec3 size = solid.report.validation.bounds.size();
-  // The report prints sizes to 0.01 mm; what fits as printed fits.
-  constexpr double kSlack = 1e-3;
-  const bool fits =
-      !bed || (size.x <= bed->x + kSlack && size.y <= bed->y + kSlack &&
-               size.z <= bed->z + kSlack);
+  const bool fits = !bed || fits_bed(solid.report.validation.bounds, *bed);
   if (text && bed) {
     if (fits) {
       fmt::print("bed: fits {} x {} x {} mm\n", bed->x, bed->y, bed->z);
     } else {
+      const glm::dvec3 size = solid.report.validation.bounds.size();
       fmt::print(
           "bed: {:.1f} x {:.1f} x {:.1f} mm does not fit {} x {} x {} mm\n",
           size.x, size.y, size.z, bed->x, bed->y, bed->z);

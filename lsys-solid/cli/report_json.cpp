@@ -18,6 +18,13 @@ std::map<int, std::size_t> color_counts(const Solid& solid) {
   return triangles;
 }
 
+bool fits_bed(const Box& bounds, const glm::dvec3& bed_mm) {
+  const glm::dvec3 size = bounds.size();
+  constexpr double kSlack = 1e-3;
+  return size.x <= bed_mm.x + kSlack && size.y <= bed_mm.y + kSlack &&
+         size.z <= bed_mm.z + kSlack;
+}
+
 Json report_json(const Solid& solid, const OverhangReport& over,
                  const std::optional<glm::dvec3>& bed, bool fits,
                  const std::filesystem::path& output, bool written, bool united,

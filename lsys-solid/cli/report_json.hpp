@@ -19,6 +19,11 @@ namespace lsolid::cli {
 /// --multi-material, else those of the one mesh.
 [[nodiscard]] std::map<int, std::size_t> color_counts(const Solid& solid);
 
+/// Whether a model of these bounds fits a printer's build volume
+/// (`bed_mm`: width, depth, height), as the report prints sizes: to
+/// 0.01 mm, so what fits as printed fits.
+[[nodiscard]] bool fits_bed(const Box& bounds, const glm::dvec3& bed_mm);
+
 /// A build's report as one JSON object, the build's `--json` and the
 /// viewer's; docs/cli.md lists its members in this order.
 [[nodiscard]] Json report_json(const Solid& solid, const OverhangReport& over,

@@ -14,10 +14,10 @@
 
 namespace lsolid {
 
-std::vector<bool> overhanging_triangles(const TriangleMesh& mesh,
-                                        double limit_deg) {
-  std::vector<bool> out(mesh.triangles.size(), false);
-  if (mesh.triangles.empty()) return out;
+OverhangReport overhang(const TriangleMesh& mesh, double limit_deg) {
+  OverhangReport report;
+  report.triangles.assign(mesh.triangles.size(), false);
+  if (mesh.triangles.empty()) return report;
   const double bed = bounds(mesh).min.z;
   constexpr double kOnBed = 1e-3;
   const double steep = std::sin(limit_deg * std::numbers::pi / 180.0);
@@ -29,22 +29,9 @@ std::vector<bool> overhanging_triangles(const TriangleMesh& mesh,
     if (std::max({a.z, b.z, c.z}) <= bed + kOnBed) continue;
     const glm::dvec3 n = glm::cross(b - a, c - a);
     const double twice_area = glm::length(n);
-    if (twice_area == 0.0) continue;
-    out[i] = -n.z / twice_area > steep;
-  }
-  return out;
-}
-
-OverhangReport overhang(const TriangleMesh& mesh, double limit_deg) {
-  OverhangReport report;
-  const std::vector<bool> steep = overhanging_triangles(mesh, limit_deg);
-  for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
-    if (!steep[i]) continue;
-    const auto& t = mesh.triangles[i];
-    report.area_mm2 +=
-        glm::length(glm::cross(mesh.vertices[t[1]] - mesh.vertices[t[0]],
-                               mesh.vertices[t[2]] - mesh.vertices[t[0]])) /
-        2.0;
+    if (twice_area == 0.0 || -n.z / twice_area <= steep) continue;
+    report.triangles[i] = true;
+    report.area_mm2 += twice_area / 2.0;
   }
   report.needs_supports = report.area_mm2 > kSupportArea;
   return report;

@@ -35,7 +35,7 @@ TEST(Overhang, CountsTheUndersideOfWhatHangsInTheAir) {
 TEST(Overhang, FlagsTheTrianglesOfACeilingOnly) {
   TriangleMesh m = box_mesh({0, 0, 0}, {1, 1, 1});
   append(m, box_mesh({-1, -1, 5}, {2, 1, 6}));
-  const std::vector<bool> steep = overhanging_triangles(m);
+  const std::vector<bool> steep = overhang(m).triangles;
   ASSERT_EQ(steep.size(), m.triangles.size());
   std::size_t flagged = 0;
   for (std::size_t i = 0; i < steep.size(); ++i) {

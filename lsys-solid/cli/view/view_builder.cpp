@@ -516,18 +516,10 @@ void ViewBuilder::build(Job job) {
     const PrintSettings& settings = job.options.print;
     const ValidationReport& v = solid.report.validation;
     const OverhangReport over = overhang(solid.mesh);
-    const glm::dvec3 size = v.bounds.size();
-    // As the build's report: sizes are printed to 0.01 mm, and what fits as
-    // printed fits.
-    constexpr double kSlack = 1e-3;
-    const bool fits = size.x <= bed_mm_.x + kSlack &&
-                      size.y <= bed_mm_.y + kSlack &&
-                      size.z <= bed_mm_.z + kSlack;
-    Json report = report_json(solid, over, bed_mm_, fits, "", false, true, true,
-                              settings.colors);
+    Json report = report_json(solid, over, bed_mm_, fits_bed(v.bounds, bed_mm_),
+                              "", false, true, true, settings.colors);
     report["problems"] = v.problems();
-    std::string bytes = encode_mesh(solid.mesh, solid.colors,
-                                    overhanging_triangles(solid.mesh));
+    std::string bytes = encode_mesh(solid.mesh, solid.colors, over.triangles);
     auto model =
         std::make_shared<ViewModel>(ViewModel{.solid = std::move(solid),
                                               .palette = settings.colors,

@@ -124,6 +124,21 @@
     redraw();
   }
 
+  // Puts `next` in the scene in place of `old` (disposed of) and returns it;
+  // the camera is fitted to the first object that has something to show.
+  function replace(old, next, hasSomething) {
+    if (old) {
+      scene.remove(old);
+      dispose(old);
+    }
+    scene.add(next);
+    if (!fitted && hasSomething) {
+      fit(new THREE.Box3().setFromObject(next));
+      fitted = true;
+    }
+    return next;
+  }
+
   // ---- the skeleton: segments as lines, polygons as flat leaves
   function showSkeleton(buffer, palette) {
     const view = new DataView(buffer);
@@ -182,17 +197,8 @@
       group.add(new THREE.Mesh(geometry, new THREE.MeshLambertMaterial({
         vertexColors: THREE.VertexColors, side: THREE.DoubleSide })));
     }
-    if (skeletonObject) {
-      scene.remove(skeletonObject);
-      dispose(skeletonObject);
-    }
-    skeletonObject = group;
-    scene.add(group);
+    skeletonObject = replace(skeletonObject, group, segments + polygons > 0);
     applyVisibility();
-    if (!fitted && segments + polygons > 0) {
-      fit(new THREE.Box3().setFromObject(group));
-      fitted = true;
-    }
   }
 
   // ---- the model: one colour per triangle, overhangs shaded on request
@@ -236,17 +242,8 @@
     geometry.computeVertexNormals();
     const mesh = new THREE.Mesh(geometry, new THREE.MeshLambertMaterial({
       vertexColors: THREE.VertexColors }));
-    if (modelObject) {
-      scene.remove(modelObject);
-      dispose(modelObject);
-    }
-    modelObject = mesh;
-    scene.add(mesh);
+    modelObject = replace(modelObject, mesh, triangles > 0);
     applyVisibility();
-    if (!fitted) {
-      fit(new THREE.Box3().setFromObject(mesh));
-      fitted = true;
-    }
   }
 
   // A skeleton newer than the model (the file was saved, a control moved,

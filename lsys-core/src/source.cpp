@@ -2,14 +2,16 @@
 // SPDX-License-Identifier: MIT
 #include "lsys/source.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 
 #include "lsys/alphabet.hpp"
 #include "lsys/diagnostic.hpp"
@@ -98,27 +100,96 @@ std::string_view SourceFile::line_text(int line) const {
   return std::string_view(text).substr(start, end - start);
 }
 
+std::string_view describe_file_type(std::filesystem::file_type type) {
+  switch (type) {
+    case std::filesystem::file_type::regular:
+      return "a regular file";
+    case std::filesystem::file_type::directory:
+      return "a directory";
+    case std::filesystem::file_type::fifo:
+      return "a FIFO (named pipe)";
+    case std::filesystem::file_type::block:
+    case std::filesystem::file_type::character:
+      return "a device";
+    case std::filesystem::file_type::socket:
+      return "a socket";
+    case std::filesystem::file_type::symlink:
+      return "a symbolic link";
+    default:
+      return "not a regular file";
+  }
+}
+
+namespace {
+
+[[noreturn]] void refuse_file(const std::filesystem::path& path,
+                              std::string message) {
+  throw ParseError(
+      Diagnostic{.file = path.string(), .message = std::move(message)});
+}
+
+std::filesystem::file_type type_of(const struct stat& status) {
+  if (S_ISREG(status.st_mode)) return std::filesystem::file_type::regular;
+  if (S_ISDIR(status.st_mode)) return std::filesystem::file_type::directory;
+  if (S_ISFIFO(status.st_mode)) return std::filesystem::file_type::fifo;
+  if (S_ISCHR(status.st_mode)) return std::filesystem::file_type::character;
+  if (S_ISBLK(status.st_mode)) return std::filesystem::file_type::block;
+  if (S_ISSOCK(status.st_mode)) return std::filesystem::file_type::socket;
+  return std::filesystem::file_type::unknown;
+}
+
+void refuse_unless_regular(const std::filesystem::path& path,
+                           const struct stat& status) {
+  const std::filesystem::file_type type = type_of(status);
+  if (type == std::filesystem::file_type::regular) return;
+  refuse_file(path, std::string("cannot read file: it is ") +
+                        std::string(describe_file_type(type)) +
+                        ", and lsolid reads only regular files");
+}
+
+// Closes a descriptor however the read ends.
+struct Descriptor {
+  int fd;
+  ~Descriptor() { ::close(fd); }
+};
+
+}  // namespace
+
 std::shared_ptr<const SourceFile> load_source(const std::filesystem::path& path,
                                               std::size_t max_bytes) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw ParseError(Diagnostic{
-        .file = path.string(),
-        .message = std::string("cannot read file: ") + std::strerror(errno)});
+  // The kind of file is known before it is opened: opening a FIFO waits
+  // for a writer, and a device may never end or act on being opened. The
+  // open itself does not wait (O_NONBLOCK), and the file opened is checked
+  // again, in case it was replaced in between.
+  struct stat before {};
+  if (::stat(path.c_str(), &before) != 0) {
+    refuse_file(path, std::string("cannot read file: ") + std::strerror(errno));
   }
-  // Read in blocks up to one byte past the limit: a device or a pipe may
-  // never end, and a huge file is refused without being held.
+  refuse_unless_regular(path, before);
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+  if (fd < 0) {
+    refuse_file(path, std::string("cannot read file: ") + std::strerror(errno));
+  }
+  const Descriptor descriptor{fd};
+  struct stat opened {};
+  if (::fstat(fd, &opened) != 0) {
+    refuse_file(path, std::string("cannot read file: ") + std::strerror(errno));
+  }
+  refuse_unless_regular(path, opened);
+  // Read in blocks up to one byte past the limit: a huge file is refused
+  // without being held.
   std::string text;
   std::array<char, 1U << 16U> block{};
-  while (text.size() <= max_bytes && in) {
-    in.read(block.data(), static_cast<std::streamsize>(std::min(
-                              block.size(), max_bytes + 1 - text.size())));
-    text.append(block.data(), static_cast<std::size_t>(in.gcount()));
-  }
-  if (in.bad()) {
-    throw ParseError(Diagnostic{
-        .file = path.string(),
-        .message = std::string("cannot read file: ") + std::strerror(errno)});
+  while (text.size() <= max_bytes) {
+    const ::ssize_t got = ::read(
+        fd, block.data(), std::min(block.size(), max_bytes + 1 - text.size()));
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) {
+      refuse_file(path,
+                  std::string("cannot read file: ") + std::strerror(errno));
+    }
+    if (got == 0) break;
+    text.append(block.data(), static_cast<std::size_t>(got));
   }
   const std::size_t read = text.size();
   auto source =

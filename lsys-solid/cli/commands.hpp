@@ -28,9 +28,10 @@ struct GrammarInput {
   std::optional<std::string> max_modules;
   std::optional<std::string> max_memory;  ///< in MiB
   std::optional<std::string> roll;
-  std::optional<std::string> dialect;  ///< --dialect
-  std::string system;                  ///< --system
-  std::string view_file;               ///< --view
+  std::optional<std::string> dialect;     ///< --dialect
+  std::string system;                     ///< --system
+  std::string view_file;                  ///< --view
+  std::vector<std::string> include_dirs;  ///< --include-dir
 };
 
 /// A whole number typed for an option: decimal digits only, from `least` to
@@ -138,8 +139,8 @@ struct ViewCommand {
   int port = 0;  ///< 0: the first free one from 8400 on
 };
 /// Serves until interrupted (Ctrl-C) or terminated.
-/// @throws IoError when the file is missing or the port cannot be bound,
-///   lsys::ParseError for a bad option.
+/// @throws IoError when the port cannot be bound, lsys::ParseError for a
+///   bad option or a file that is missing or not a regular file.
 void run_view(const ViewCommand& command);
 
 /// `lsolid check MESH`: validates an STL, OFF, 3MF or OBJ file.

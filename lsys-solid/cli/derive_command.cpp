@@ -55,6 +55,14 @@ void add_grammar_options(CLI::App& command, GrammarInput& input, bool with_roll,
                   "cpfg's view file (default: the .v of the same name, or "
                   "the folder's only .v)")
       ->type_name("FILE.v");
+  command
+      .add_option("--include-dir", input.include_dirs,
+                  "a folder whose files the model may read besides its own "
+                  "(#include, a view's function, surface and contour files); "
+                  "may be given again")
+      ->type_name("DIR")
+      ->check(CLI::ExistingDirectory)
+      ->allow_extra_args(false);
   const lsys::DerivationOptions defaults;
   command
       .add_option("--max-segments", input.max_segments,
@@ -89,7 +97,8 @@ lsys::Grammar load_grammar(const GrammarInput& input) {
                                         ? lsys::dialect_named(*input.dialect)
                                         : std::nullopt,
                          .system = input.system,
-                         .view_file = input.view_file});
+                         .view_file = input.view_file,
+                         .include_dirs = input.include_dirs});
   for (const std::string& warning : grammar.warnings) {
     std::fprintf(stderr, "warning: %s\n", warning.c_str());
   }

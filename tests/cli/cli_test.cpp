@@ -18,7 +18,9 @@
 #include <utility>
 #include <vector>
 
+#include "support/hostile_models.hpp"
 #include "support/run_command.hpp"
+#include "support/test_dir.hpp"
 
 namespace lsolid {
 namespace {
@@ -743,6 +745,35 @@ TEST_F(Build, RefusesSpecialFilesAsOutputsBeforeBuilding) {
   EXPECT_FALSE(std::filesystem::exists(dir_ / "m.obj"));
 }
 
+TEST_F(Build, RefusesSpecialFilesAsInputsBeforeOpeningThem) {
+  // Opening a FIFO waits for a writer: any command that opened one would
+  // hang this test.
+  ASSERT_EQ(::mkfifo((dir_ / "fifo.ls").c_str(), 0644), 0);
+  ASSERT_EQ(::mkfifo((dir_ / "fifo.v").c_str(), 0644), 0);
+  std::filesystem::create_symlink("/dev/zero", dir_ / "zero.ls");
+  { std::ofstream(dir_ / "plant.l") << "Lsystem: 1\nAxiom: F\nendlsystem\n"; }
+  for (const std::string command : {"", "derive ", "skeleton "}) {
+    for (const auto& [input, message] :
+         std::vector<std::pair<std::string, std::string>>{
+             {"fifo.ls",
+              "fifo.ls: error: cannot read file: it is a FIFO (named pipe), "
+              "and lsolid reads only regular files\n"},
+             {"zero.ls",
+              "zero.ls: error: cannot read file: it is a device, and lsolid "
+              "reads only regular files\n"},
+             {"plant.l --view fifo.v",
+              "fifo.v: error: cannot read file: it is a FIFO (named pipe), "
+              "and lsolid reads only regular files\n"}}) {
+      const auto r = run_command(lsolid() + " " + command + input, dir_);
+      EXPECT_EQ(r.exit_code, 2) << command << input;
+      EXPECT_EQ(r.err, message) << command << input;
+      EXPECT_EQ(r.out, "") << command << input;
+    }
+  }
+  EXPECT_TRUE(std::filesystem::is_fifo(dir_ / "fifo.ls"));
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "fifo.stl"));
+}
+
 TEST_F(Build, WritesThroughASymbolicLinkToItsRegularFile) {
   { std::ofstream(dir_ / "f.ls") << "\u03C9: F\n"; }
   { std::ofstream(dir_ / "real.stl") << "old"; }
@@ -993,8 +1024,62 @@ TEST(Check, ExitsOneForAnUnprintableMeshAndTwoForAnUnreadableOne) {
   EXPECT_NE(missing.err.find("cannot read"), std::string::npos);
 }
 
+// Whether a file a traced lsolid opened is one it may open: in the model's
+// folder, or the system's (its libraries, their configuration, /proc).
+bool may_open(const std::filesystem::path& path,
+              const std::filesystem::path& model_folder) {
+  if (testing::lies_in(path, model_folder)) return true;
+  // Named in a system folder (OpenSSL's /usr/lib/ssl/openssl.cnf is a link
+  // to /etc/ssl/openssl.cnf).
+  for (const std::string system :
+       {"/lib/", "/lib64/", "/usr/", "/proc/", "/sys/"}) {
+    if (path.string().starts_with(system)) return true;
+  }
+  return path == "/etc/ld.so.cache" || path == "/etc/ld.so.preload";
+}
+
+// A model people download must never make lsolid open a file outside its
+// folder, by any route a notation offers to name one: strace records every
+// file each command opens, and none is outside the model's folder and the
+// system's; no output holds the text of the files it aimed at.
+TEST(Trust, NoCommandOpensAFileOutsideTheModelsFolder) {
+  const auto root = testing::make_test_dir("lsolid_trust_");
+  const auto secret = root / "secret";
+  const auto trace = root / "trace.txt";
+  // LeakSanitizer stops the world with ptrace, which strace holds already.
+  const std::string env = "ASAN_OPTIONS=detect_leaks=0 ";
+  for (const testing::HostileModel& model :
+       testing::write_hostile_models(root)) {
+    const auto dir = root / "models" / model.route;
+    for (const std::string command : {"", "derive ", "skeleton "}) {
+      const std::string line = env + testing::strace_prefix(trace) + lsolid() +
+                               " " + command + model.file + " --dialect " +
+                               model.dialect +
+                               (command.empty() ? " -o out.stl" : "");
+      const auto r = run_command(line, dir);
+      SCOPED_TRACE(model.route + ": " + line);
+      EXPECT_EQ(r.exit_code, 2) << r.err;
+      EXPECT_EQ(r.err.find(testing::kSecretText), std::string::npos) << r.err;
+      EXPECT_EQ(r.out.find(testing::kSecretText), std::string::npos) << r.out;
+      const auto opened = testing::opened_files(trace, dir);
+      // The trace holds the program's own opens: the model, its libraries.
+      EXPECT_TRUE(std::any_of(opened.begin(), opened.end(), [&](const auto& p) {
+        return p == dir / model.file;
+      }));
+      for (const auto& path : opened) {
+        EXPECT_FALSE(testing::lies_in(path, secret)) << path;
+        EXPECT_TRUE(may_open(path, dir)) << path;
+      }
+      EXPECT_FALSE(std::filesystem::exists(dir / "out.stl"));
+    }
+  }
+  std::filesystem::remove_all(root);
+}
+
 // The catalogue of bad inputs, tests/data/diagnostics/cases.txt: a file, the
-// exit code lsolid gives it, and the options after it.
+// exit code lsolid gives it, and the options after it. A case whose model
+// names other files (a view file, headers, links) has them in
+// companions/STEM/, copied beside it as they are (links stay links).
 struct BadInput {
   std::string file;
   int exit_code = 0;
@@ -1036,6 +1121,17 @@ TEST_P(Catalogue, GivesItsGoldenErrorAndLeavesTheOutputUntouched) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   std::filesystem::copy_file(kDiagnostics / c.file, dir / c.file);
+  std::size_t companions = 0;
+  const auto companion_folder = kDiagnostics / "companions" / stem;
+  if (std::filesystem::is_directory(companion_folder)) {
+    std::filesystem::copy(companion_folder, dir,
+                          std::filesystem::copy_options::recursive |
+                              std::filesystem::copy_options::copy_symlinks);
+    for ([[maybe_unused]] const auto& e :
+         std::filesystem::directory_iterator(companion_folder)) {
+      ++companions;
+    }
+  }
   const std::string kept = "keep me: " + stem.string() + "\n";
   { std::ofstream(dir / "out.stl", std::ios::binary) << kept; }
   const std::string extension = std::filesystem::path(c.file).extension();
@@ -1056,7 +1152,8 @@ TEST_P(Catalogue, GivesItsGoldenErrorAndLeavesTheOutputUntouched) {
        std::filesystem::directory_iterator(dir)) {
     ++entries;
   }
-  EXPECT_EQ(entries, 2U) << command;  // the input and out.stl, no temporary
+  // The input, its companions and out.stl, no temporary.
+  EXPECT_EQ(entries, 2U + companions) << command;
   std::filesystem::remove_all(dir);
 }
 
@@ -1081,8 +1178,20 @@ TEST(CatalogueFolder, ListsEveryInputOnceWithItsGoldenError) {
   EXPECT_GE(listed.size(), 60U);
   for (const auto& entry : std::filesystem::directory_iterator(kDiagnostics)) {
     const std::string name = entry.path().filename().string();
-    if (name == "cases.txt" || entry.path().extension() == ".stderr") continue;
+    if (name == "cases.txt" || name == "companions" ||
+        entry.path().extension() == ".stderr") {
+      continue;
+    }
     EXPECT_EQ(listed.count(name), 1U) << name << " is not in cases.txt";
+  }
+  for (const auto& entry :
+       std::filesystem::directory_iterator(kDiagnostics / "companions")) {
+    const std::string stem = entry.path().filename().string();
+    EXPECT_TRUE(std::any_of(listed.begin(), listed.end(),
+                            [&](const std::string& file) {
+                              return std::filesystem::path(file).stem() == stem;
+                            }))
+        << "companions/" << stem << " belongs to no case";
   }
 }
 

@@ -10,6 +10,7 @@
 #include <netinet/in.h>
 #include <signal.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -19,10 +20,12 @@
 #include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "support/hostile_models.hpp"
 #include "support/run_command.hpp"
 #include "support/test_dir.hpp"
 
@@ -82,18 +85,28 @@ class RawRequest {
 };
 
 // `lsolid view` running in the background, stopped as Ctrl-C stops it.
+// With a `trace` file, it runs under strace, which records there every
+// file it opens.
 class ViewProcess {
  public:
   ViewProcess(const std::filesystem::path& folder, const std::string& file,
-              const std::vector<std::string>& options = {})
-      : port_(free_port()) {
+              const std::vector<std::string>& options = {},
+              const std::filesystem::path& trace = {})
+      : port_(free_port()), traced_(!trace.empty()) {
     std::vector<std::string> words{LSOLID_BINARY, "view", file, "--port",
                                    std::to_string(port_)};
     words.insert(words.end(), options.begin(), options.end());
+    if (traced_) {
+      words.insert(words.begin(),
+                   {"/usr/bin/strace", "-f", "-qq", "-e",
+                    "trace=open,openat,openat2,creat", "-o", trace.string()});
+    }
     log_ = folder / "view.log";
     pid_ = ::fork();
     if (pid_ == 0) {
       if (::chdir(folder.c_str()) != 0) ::_exit(126);
+      // LeakSanitizer stops the world with ptrace, which strace holds.
+      if (traced_) ::setenv("ASAN_OPTIONS", "detect_leaks=0", 1);
       std::vector<char*> argv;
       for (std::string& w : words) argv.push_back(w.data());
       argv.push_back(nullptr);
@@ -114,10 +127,18 @@ class ViewProcess {
   }
   ~ViewProcess() { stop(); }
 
-  // Stops it with SIGINT; returns its exit code.
+  // Stops it with SIGINT; returns its exit code. Under strace, lsolid (the
+  // tracer's child) is the one stopped, and strace ends with it.
   int stop() {
     if (pid_ <= 0) return exit_code_;
-    ::kill(pid_, SIGINT);
+    pid_t target = pid_;
+    if (traced_) {
+      std::istringstream children(
+          testing::read_text("/proc/" + std::to_string(pid_) + "/task/" +
+                             std::to_string(pid_) + "/children"));
+      children >> target;
+    }
+    ::kill(target, SIGINT);
     int status = 0;
     ::waitpid(pid_, &status, 0);
     pid_ = 0;
@@ -151,6 +172,7 @@ class ViewProcess {
 
  private:
   int port_;
+  bool traced_ = false;
   pid_t pid_ = 0;
   int exit_code_ = -1;
   std::filesystem::path log_;
@@ -186,6 +208,58 @@ class View : public ::testing::Test {
 constexpr const char* kTree =
     "n = 2\n\u03B4 = 25\nwidth: 1\nsize: 40mm\n\u03C9: A\n"
     "A \u2192 F[+A][-A]FA\n";
+
+// What a model refused for naming a file outside its folder shows: its
+// own line, never the file it named, and nothing else is opened (strace).
+TEST_F(View, ShowsNothingButTheModelWhateverFileItNames) {
+  const auto secret = dir_ / "secret";
+  const auto trace = dir_ / "trace.txt";
+  for (const testing::HostileModel& model :
+       testing::write_hostile_models(dir_)) {
+    SCOPED_TRACE(model.route);
+    const auto folder = dir_ / "models" / model.route;
+    Json refused;
+    {
+      ViewProcess view(folder, model.file, {"--dialect", model.dialect}, trace);
+      refused =
+          view.wait_for([](const Json& s) { return !s["error"].is_null(); });
+      for (const char* path : {"/", "/status"}) {
+        const auto r = view.client().Get(path);
+        ASSERT_TRUE(r);
+        EXPECT_EQ(r->body.find(testing::kSecretText), std::string::npos);
+      }
+      EXPECT_EQ(view.stop(), 0) << view.log();
+      EXPECT_EQ(view.log().find(testing::kSecretText), std::string::npos);
+    }
+    EXPECT_EQ(refused.dump().find(testing::kSecretText), std::string::npos)
+        << refused.dump();
+    EXPECT_EQ(refused["model"], 0);
+    const auto opened = testing::opened_files(trace, folder);
+    EXPECT_TRUE(std::any_of(opened.begin(), opened.end(), [&](const auto& p) {
+      return p == folder / model.file;
+    }));
+    for (const auto& path : opened) {
+      EXPECT_FALSE(testing::lies_in(path, secret)) << path;
+      EXPECT_FALSE(testing::lies_in(path, dir_) &&
+                   !testing::lies_in(path, folder))
+          << path;
+    }
+  }
+}
+
+TEST_F(View, RefusesAFifoOrADeviceAsItsFileBeforeServing) {
+  ASSERT_EQ(::mkfifo((dir_ / "fifo.ls").c_str(), 0644), 0);
+  std::filesystem::create_symlink("/dev/zero", dir_ / "zero.ls");
+  for (const auto& [input, kind] :
+       std::vector<std::pair<std::string, std::string>>{
+           {"fifo.ls", "a FIFO (named pipe)"}, {"zero.ls", "a device"}}) {
+    const auto r = run_command(lsolid() + " view " + input, dir_);
+    EXPECT_EQ(r.exit_code, 2) << input;
+    EXPECT_EQ(r.err, input + ": error: cannot read file: it is " + kind +
+                         ", and lsolid reads only regular files\n");
+    EXPECT_EQ(r.out, "");
+  }
+}
 
 TEST_F(View, ServesItsPageAndNothingElse) {
   write("tree.ls", kTree);

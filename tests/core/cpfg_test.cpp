@@ -4,12 +4,14 @@
 // The cpfg front end (docs/dialects/cpfg.md): the C preprocessor, the view
 // file beside the `.l`, cpfg's symbols and what it refuses.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <glm/geometric.hpp>
 #include <numbers>
+#include <string>
 
 #include "lsys/interpretation.hpp"
 #include "support/core_helpers.hpp"
@@ -194,6 +196,223 @@ TEST_F(CpfgFiles, ReadsAnIncludedFileBesideItWithItsMacrosAndConstants) {
   write("self.l", "#include \"self.l\"\nLsystem: 1\nAxiom: F\n");
   EXPECT_EQ(located_error_of([&] { (void)read("self.l"); }),
             "1:1: #include nested too deeply (a file that includes itself?)");
+}
+
+// What an error says, wherever it is placed: the name as written, never
+// the text of a file outside the model's folder.
+template <typename Work>
+std::string message_of(const Work& work) {
+  try {
+    work();
+  } catch (const ParseError& e) {
+    return e.diagnostic().message + " | " + e.diagnostic().source_line;
+  }
+  return "no error";
+}
+
+constexpr std::string_view kOnlyOwnFolder =
+    "a model reads only files in its own folder (--include-dir allows "
+    "another)";
+
+TEST_F(CpfgFiles, IncludesOnlyFilesInsideTheModelsFolder) {
+  std::filesystem::create_directories(dir_ / "model" / "sub");
+  std::filesystem::create_directories(dir_ / "outside");
+  write("outside/secret.h", "#define SECRET_TEXT 1\n");
+  write("model/params.h", "#define N 2\n");
+  const auto plant = [&](const std::string& header) {
+    write("model/plant.l", "#include \"" + header +
+                               "\"\nLsystem: 1\nderivation length: N\n"
+                               "Axiom: F\nF --> FF\nendlsystem\n");
+    return message_of([&] { (void)read("model/plant.l"); });
+  };
+  const std::string absolute = (dir_ / "outside" / "secret.h").string();
+  EXPECT_EQ(plant(absolute), "#include \"" + absolute +
+                                 "\": an absolute name; " +
+                                 std::string(kOnlyOwnFolder) +
+                                 " | #include \"" + absolute + "\"");
+  EXPECT_EQ(plant("../outside/secret.h"),
+            "#include \"../outside/secret.h\": a name that leaves the folder "
+            "('..'); " +
+                std::string(kOnlyOwnFolder) +
+                " | #include \"../outside/secret.h\"");
+  // `..` is refused even where it would come back in.
+  EXPECT_NE(plant("sub/../params.h").find("leaves the folder"),
+            std::string::npos);
+  // A link that leads out, to a file or through a folder.
+  std::filesystem::create_symlink(dir_ / "outside" / "secret.h",
+                                  dir_ / "model" / "link.h");
+  std::filesystem::create_symlink(dir_ / "outside", dir_ / "model" / "out");
+  for (const std::string header : {"link.h", "out/secret.h"}) {
+    EXPECT_EQ(plant(header), "#include \"" + header +
+                                 "\": a symbolic link leads it out of the "
+                                 "model's folder; " +
+                                 std::string(kOnlyOwnFolder) +
+                                 " | #include \"" + header + "\"");
+  }
+  EXPECT_EQ(plant("sub"),
+            "#include \"sub\": it is a directory, not a "
+            "regular file | #include \"sub\"");
+  // Links and folders inside the model's folder are read.
+  std::filesystem::create_symlink("params.h", dir_ / "model" / "alias.h");
+  write("model/sub/outer.h", "#include \"inner.h\"\n");
+  write("model/sub/inner.h", "#define N 3\n");
+  for (const std::string header : {"params.h", "alias.h", "sub/outer.h"}) {
+    EXPECT_EQ(plant(header), "no error") << header;
+  }
+  EXPECT_EQ(read("model/plant.l").settings.derivation_length, 3);
+  // --include-dir allows another folder, whose names resolve there.
+  write("model/plant.l",
+        "#include \"secret.h\"\nLsystem: 1\nAxiom: F\nendlsystem\n");
+  EXPECT_EQ(message_of([&] { (void)read("model/plant.l"); }),
+            "#include \"secret.h\": no such file beside this one (" +
+                (dir_ / "model" / "secret.h").string() +
+                ") | #include \"secret.h\"");
+  EXPECT_EQ(message_of([&] {
+              (void)read("model/plant.l",
+                         {.include_dirs = {(dir_ / "outside").string()}});
+            }),
+            "no error");
+}
+
+TEST_F(CpfgFiles, ReadsOnlyTheViewFilesCompanionsInsideTheModelsFolder) {
+  std::filesystem::create_directories(dir_ / "model");
+  std::filesystem::create_directories(dir_ / "outside");
+  write("outside/secret.func", "SECRET TEXT\n");
+  write("model/leaf.l", "Lsystem: 1\nAxiom: F\nendlsystem\n");
+  const std::string secret = (dir_ / "outside" / "secret.func").string();
+  const auto view = [&](const std::string& text) {
+    write("model/leaf.v", text);
+    const std::string message = message_of([&] { (void)read("model/leaf.l"); });
+    EXPECT_EQ(message.find("SECRET"), std::string::npos) << message;
+    return message;
+  };
+  for (const std::string label :
+       {"function:", "function set:", "surface: l", "contour: 1"}) {
+    const std::string what = label.substr(0, label.find(':') + 1);
+    EXPECT_EQ(view(label + " " + secret + "\n"),
+              what + " \"" + secret + "\": an absolute name; " +
+                  std::string(kOnlyOwnFolder) + " | " + label + " " + secret);
+    EXPECT_EQ(view(label + " ../outside/secret.func\n"),
+              what +
+                  " \"../outside/secret.func\": a name that leaves the "
+                  "folder ('..'); " +
+                  std::string(kOnlyOwnFolder) + " | " + label +
+                  " ../outside/secret.func");
+  }
+  EXPECT_EQ(view("#include \"" + secret + "\"\n"),
+            "#include \"" + secret + "\": an absolute name; " +
+                std::string(kOnlyOwnFolder) + " | #include \"" + secret + "\"");
+  // A FIFO named by the view is refused before it is opened (opening it
+  // would wait for a writer for ever).
+  ASSERT_EQ(::mkfifo((dir_ / "model" / "f.func").c_str(), 0644), 0);
+  EXPECT_EQ(view("function: f.func\n"),
+            "function: \"f.func\": it is a FIFO (named pipe), not a regular "
+            "file | function: f.func");
+  // The view file itself, found beside the model, may not lead out.
+  std::filesystem::remove(dir_ / "model" / "leaf.v");
+  std::filesystem::create_symlink(secret, dir_ / "model" / "leaf.v");
+  EXPECT_EQ(message_of([&] { (void)read("model/leaf.l"); }),
+            "the view file: a symbolic link leads it out of the model's "
+            "folder; " +
+                std::string(kOnlyOwnFolder) + " | ");
+  // One the user names is read from where it is, with its companions.
+  write("outside/mine.v", "angle increment: 30\n");
+  EXPECT_EQ(read("model/leaf.l",
+                 {.view_file = (dir_ / "outside" / "mine.v").string()})
+                .settings.angle_deg,
+            30.0);
+}
+
+TEST_F(CpfgFiles, ReadsAFunctionFileNamedManyTimesOnce) {
+  // A view of 400 lines naming one function file: 400 functions, the file
+  // read and sampled once.
+  write("leaf.l", "Lsystem: 1\nAxiom: A(func(400, 0.25))\nendlsystem\n");
+  std::string view;
+  for (int i = 0; i < 400; ++i) view += "function: line.func 100\n";
+  write("leaf.v", view);
+  write("line.func",
+        "fver 1 1\nname: line\nsamples: 0\nflip: off\npoints: 4\n"
+        "0 0 1\n0.333333 0.333333 1\n0.666667 0.666667 1\n1 1 1\n");
+  EXPECT_NEAR(derive(read("leaf.l")).parameters(0)[0], 0.25, 1e-4);
+}
+
+TEST_F(CpfgFiles, BoundsTheTextThatIncludedFilesComeTo) {
+  // Fifteen headers that each include the next six times.
+  for (int k = 1; k <= 15; ++k) {
+    std::string text = "#define LEVEL";
+    text += std::to_string(k);
+    text += " 1\n";
+    for (int j = 0; k < 15 && j < 6; ++j) {
+      text += "#include \"h";
+      text += std::to_string(k + 1);
+      text += ".h\"\n";
+    }
+    std::string name = "h";
+    name += std::to_string(k);
+    name += ".h";
+    write(name, text);
+  }
+  write("plant.l", "#include \"h1.h\"\nLsystem: 1\nAxiom: F\nendlsystem\n");
+  // Placed at the directive that passes the bound, in its header.
+  EXPECT_EQ(message_of([&] { (void)read("plant.l"); }),
+            "more than 1000 #include directives read in all (files that "
+            "include each other many times?) | #include \"h15.h\"");
+}
+
+// `A0` is F and each of 40 more macros uses the one before twice, through a
+// macro E that the text defines first: `#define A1 E(A0)E(A0)`.
+std::string doubling_macros() {
+  std::string text = "#define A0 F\n";
+  for (int k = 1; k <= 40; ++k) {
+    const std::string before = std::to_string(k - 1);
+    text += "#define A";
+    text += std::to_string(k);
+    text += " E(A" + before + ")E(A" + before + ")\n";
+  }
+  return text;
+}
+
+TEST(Cpfg, ExpandsAMacrosArgumentOnlyWhereItsBodyUsesIt) {
+  // Each line uses the one before twice, through a macro that drops its
+  // argument: expanding arguments first would take 2^40 steps.
+  const std::string text = "#define E(x)\n" + doubling_macros();
+  EXPECT_EQ(kCpfg.derived(text + std::string(kHead) + "Axiom: G A40 G\n"),
+            "GG");
+  // An argument used twice is expanded once, to the same text.
+  EXPECT_EQ(kCpfg.derived("#define TWICE(x) x x\n#define B F(1)\n" +
+                          std::string(kHead) + "Axiom: TWICE(B)\n"),
+            "F(1)F(1)");
+}
+
+TEST(Cpfg, RefusesMacrosThatExpandToTooMuchAtTheirUse) {
+  // Nothing comes out, but the work doubles with each line.
+  std::string text = "#define G(x)\n#define E(x) G(x)\n" + doubling_macros();
+  EXPECT_EQ(kCpfg.error(text + std::string(kHead) + "Axiom: F A40\n"),
+            "46:10: the macros take too much work to expand (more than "
+            "67108864 bytes scanned; macros that use each other many "
+            "times?)");
+  // A macro of half a megabyte used forty times passes the 16 MiB a file
+  // may come to, on the line where it does.
+  text = "#define B0 FFFFFFFFF\n";
+  for (int k = 1; k <= 16; ++k) {
+    text += "#define B" + std::to_string(k) + " B" + std::to_string(k - 1) +
+            " B" + std::to_string(k - 1) + "\n";
+  }
+  text += std::string(kHead) + "Axiom: F\n";
+  for (int k = 0; k < 40; ++k) text += "B --> B16\n";
+  EXPECT_EQ(kCpfg.error(text),
+            "46:7: the text with its macros and included files expanded "
+            "comes to more than 16777216 bytes, the limit for a file");
+}
+
+TEST(Cpfg, ExpandsAMacroAgainOnceItIsDefinedAnew) {
+  // A macro's expansion is kept between uses, but not past a #define or an
+  // #undef of one it uses.
+  EXPECT_EQ(kCpfg.derived("#define A F\n#define B A\n"
+                          "Lsystem: 1\nderivation length: 2\nAxiom: B X\n"
+                          "#undef A\n#define A G\nX --> B Y\n"
+                          "#define A H\nY --> B\nendlsystem\n"),
+            "FGH");
 }
 
 TEST(Cpfg, ContinuesAStatementOnALineThatStartsWithATab) {

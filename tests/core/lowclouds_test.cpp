@@ -47,6 +47,18 @@ TEST(Lowclouds, IsDetectedByItsSettingsWhateverTheFileIsNamed) {
             Dialect::Cpfg);
 }
 
+TEST(Lowclouds, IncludesNoFileOutsideTheModelsFolder) {
+  EXPECT_EQ(kLowclouds.error("delta=22.5\n#include \"/etc/passwd\"\n"
+                             "axiom: F\n"),
+            "2:1: #include \"/etc/passwd\": an absolute name; a model reads "
+            "only files in its own folder (--include-dir allows another)");
+  EXPECT_EQ(kLowclouds.error("delta=22.5\n#include \"../../../etc/passwd\"\n"
+                             "axiom: F\n"),
+            "2:1: #include \"../../../etc/passwd\": a name that leaves the "
+            "folder ('..'); a model reads only files in its own folder "
+            "(--include-dir allows another)");
+}
+
 TEST(Lowclouds, SetsAngleWidthAndStepFromItsVariables) {
   const Grammar g = kLowclouds.parse(
       "n=1; delta=22.5; stemsize=0.3\nstep = 2\naxiom: F\nF -> F+F\n");

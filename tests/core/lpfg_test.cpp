@@ -160,6 +160,22 @@ TEST(Lpfg, RefusesWhatItCannotReadAtItsPlace) {
             }),
             "2:1: #include \"mine.h\": no such file beside this one "
             "(mine.h)");
+  // A model reads nothing outside its folder, and never quotes it.
+  EXPECT_EQ(located_error_of([] {
+              (void)kLpfg.parse(
+                  "#include <lpfgall.h>\n#include \"/etc/passwd\"\n"
+                  "Axiom: F(1);\n");
+            }),
+            "2:1: #include \"/etc/passwd\": an absolute name; a model reads "
+            "only files in its own folder (--include-dir allows another)");
+  EXPECT_EQ(located_error_of([] {
+              (void)kLpfg.parse(
+                  "#include <lpfgall.h>\n#include \"../../../etc/passwd\"\n"
+                  "Axiom: F(1);\n");
+            }),
+            "2:1: #include \"../../../etc/passwd\": a name that leaves the "
+            "folder ('..'); a model reads only files in its own folder "
+            "(--include-dir allows another)");
 }
 
 }  // namespace

@@ -3,11 +3,14 @@
 #include "lsys/source.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "lsys/diagnostic.hpp"
 #include "lsys/parser.hpp"
@@ -165,15 +168,31 @@ TEST(SourceFile, RefusesAFileLongerThanTheLimitWhereTheLimitFalls) {
   EXPECT_EQ(kMaxSourceBytes, 16U * 1024U * 1024U);
 }
 
-TEST(SourceFile, StopsReadingADeviceThatNeverEnds) {
-  try {
-    (void)load_source("/dev/zero", 1000);
-    FAIL() << "no error";
-  } catch (const ParseError& e) {
-    EXPECT_EQ(e.diagnostic().column, 1001);
-    EXPECT_EQ(e.diagnostic().message,
-              "the file is larger than 1000 bytes, the limit for a .ls file");
+TEST(SourceFile, RefusesADeviceAFifoOrAFolderBeforeOpeningIt) {
+  // /dev/zero would never end, and opening a FIFO waits for a writer: a
+  // FIFO that is opened hangs this test.
+  const std::filesystem::path fifo =
+      std::filesystem::temp_directory_path() /
+      ("lsolid_source_fifo_" + std::to_string(::getpid()));
+  std::filesystem::remove(fifo);
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
+  const std::vector<std::pair<std::filesystem::path, std::string>> cases{
+      {"/dev/zero", "a device"},
+      {fifo, "a FIFO (named pipe)"},
+      {std::filesystem::temp_directory_path(), "a directory"}};
+  for (const auto& [path, kind] : cases) {
+    try {
+      (void)load_source(path, 1000);
+      ADD_FAILURE() << path << ": no error";
+    } catch (const ParseError& e) {
+      EXPECT_EQ(e.diagnostic().file, path.string());
+      EXPECT_EQ(e.diagnostic().line, 0);
+      EXPECT_EQ(e.diagnostic().message,
+                "cannot read file: it is " + kind +
+                    ", and lsolid reads only regular files");
+    }
   }
+  std::filesystem::remove(fifo);
 }
 
 }  // namespace

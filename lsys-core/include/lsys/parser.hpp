@@ -30,6 +30,10 @@ struct ParseOptions {
   /// A cpfg view file (`.v`) to read with a cpfg `.l` file; empty looks
   /// beside it: the `.v` of the same name, else the folder's only one.
   std::string view_file;
+  /// Folders besides the model's own (and the view file's) whose files a
+  /// model may name (`--include-dir`): `#include "…"`, and a view file's
+  /// function, surface and contour files. A model reads no other file.
+  std::vector<std::string> include_dirs;
 };
 
 /// Reads an L-system file in any notation lsolid knows (docs/language.md,

@@ -92,11 +92,20 @@ class SourceFile {
 inline constexpr std::size_t kMaxSourceBytes = std::size_t{16} << 20U;
 
 /// Reads a file into a shared SourceFile named by its path, reading at most
-/// `max_bytes + 1` bytes (so that a device such as /dev/zero ends too).
-/// @throws ParseError (line 0) when the file cannot be read, and at the
-///   place of byte `max_bytes` when the file is longer than that.
+/// `max_bytes + 1` bytes. Only a regular file is read: a FIFO, a device, a
+/// socket or a folder is refused before it is opened (a FIFO would wait
+/// for a writer for ever, a device such as /dev/zero never end).
+/// @throws ParseError (line 0) when the file is missing, is not a regular
+///   file (`cannot read file: it is a FIFO (named pipe), and lsolid reads
+///   only regular files`) or cannot be read, and at the place of byte
+///   `max_bytes` when the file is longer than that.
 [[nodiscard]] std::shared_ptr<const SourceFile> load_source(
     const std::filesystem::path& path, std::size_t max_bytes = kMaxSourceBytes);
+
+/// What a file of `type` is, for a refusal: "a FIFO (named pipe)", "a
+/// device", "a directory", "a socket", "a regular file".
+[[nodiscard]] std::string_view describe_file_type(
+    std::filesystem::file_type type);
 
 /// Checks that a source is UTF-8 text: well-formed UTF-8 (no overlong forms,
 /// surrogates or code points above U+10FFFF) without control characters

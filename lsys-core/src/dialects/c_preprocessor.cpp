@@ -13,13 +13,13 @@
 
 #include <algorithm>
 #include <cctype>
-#include <filesystem>
 #include <map>
 #include <optional>
 #include <set>
 #include <string_view>
 #include <utility>
 
+#include "dialects/companion_files.hpp"
 #include "dialects/text_scan.hpp"
 #include "lsys/diagnostic.hpp"
 #include "lsys/expression.hpp"
@@ -46,6 +46,16 @@ std::string_view trim(std::string_view s) {
 struct Macro {
   std::optional<std::vector<std::string>> parameters;  // function-like
   std::string body;
+};
+
+// What one preprocessing does in all, its included files' too. A file of a
+// kilobyte can ask for exponential work (macros that use each other twice,
+// headers that include each other six times), so the work is bounded, not
+// only the size of one expansion or the depth of includes.
+struct Budget {
+  std::size_t work = 0;      // bytes scanned and written while expanding
+  std::size_t written = 0;   // bytes of text emitted, by every file
+  std::size_t includes = 0;  // #include directives read
 };
 
 // Replaces comments by blanks, keeping line breaks and offsets; string
@@ -77,7 +87,9 @@ class Preprocessor {
         options_(options),
         clean_(blank_comments(source, options.line_comments)),
         macros_(own_macros_),
-        constants_(own_constants_) {
+        constants_(own_constants_),
+        expansions_(own_expansions_),
+        budget_(own_budget_) {
     for (const std::string& d : options.defines) {
       overridden_.insert(d.substr(0, d.find('=')));
     }
@@ -94,6 +106,8 @@ class Preprocessor {
         clean_(blank_comments(source, parent.options_.line_comments)),
         macros_(parent.macros_),
         constants_(parent.constants_),
+        expansions_(parent.expansions_),
+        budget_(parent.budget_),
         overridden_(parent.overridden_),
         include_depth_(parent.include_depth_ + 1) {}
 
@@ -204,9 +218,33 @@ class Preprocessor {
     return depth > 0;
   }
 
+  // Counts text about to be emitted at `at`, refusing it past the limit.
+  void count_written(std::size_t at, std::size_t bytes) {
+    budget_.written += bytes;
+    if (budget_.written > kMaxSourceBytes) {
+      fail(at,
+           "the text with its macros and included files expanded comes "
+           "to more than " +
+               std::to_string(kMaxSourceBytes) +
+               " bytes, the limit for a file");
+    }
+  }
+
+  // Counts the work of expanding, refusing it past the limit.
+  void count_work(std::size_t at, std::size_t bytes) {
+    budget_.work += bytes;
+    if (budget_.work > kMaxWork) {
+      fail(at, "the macros take too much work to expand (more than " +
+                   std::to_string(kMaxWork) +
+                   " bytes scanned; macros that use each other many "
+                   "times?)");
+    }
+  }
+
   // Copies bytes [begin, end) of the original; splices become blanks.
   void emit_verbatim(std::size_t begin, std::size_t end) {
     if (begin >= end) return;
+    count_written(begin, end - begin);
     const std::size_t at = out_.size();
     for (std::size_t i = begin; i < end; ++i) {
       char c = clean_[i];
@@ -232,6 +270,7 @@ class Preprocessor {
 
   void emit_expansion(std::size_t at, const std::string& text) {
     if (text.empty()) return;
+    count_written(at, text.size());
     spans_.push_back(SourceSpan{.text_begin = out_.size(),
                                 .original_begin = at,
                                 .length = text.size(),
@@ -247,8 +286,8 @@ class Preprocessor {
     if (!active()) return;
     const std::string_view text = std::string_view(clean_).substr(0, end);
     std::size_t copied = begin;
-    for (auto use = next_use(text, begin, {}, std::nullopt); use;
-         use = next_use(text, use->after, {}, std::nullopt)) {
+    for (auto use = next_use(text, begin, std::nullopt); use;
+         use = next_use(text, use->after, std::nullopt)) {
       emit_verbatim(copied, use->begin);
       emit_expansion(use->begin, use->expansion);
       copied = use->after;
@@ -263,12 +302,11 @@ class Preprocessor {
     std::string expansion;
   };
 
-  // The first use at or after `from` of a macro not in `disabled`: strings
-  // and numbers are skipped (`1e5` holds no name), and a macro with
-  // parameters is a use only where `(` follows. Errors are placed at `at`,
-  // or at the use itself where the text is the source's.
+  // The first use at or after `from` of a macro not being expanded
+  // already: strings and numbers are skipped (`1e5` holds no name), and a
+  // macro with parameters is a use only where `(` follows. Errors are
+  // placed at `at`, or at the use itself where the text is the source's.
   std::optional<Use> next_use(std::string_view text, std::size_t from,
-                              const std::set<std::string>& disabled,
                               std::optional<std::size_t> at) {
     std::size_t i = from;
     while (i < text.size()) {
@@ -289,15 +327,27 @@ class Preprocessor {
       while (j < text.size() && is_ident_char(text[j])) ++j;
       const std::string name(text.substr(i, j - i));
       const auto it = macros_.find(name);
-      if (it == macros_.end() || disabled.count(name) != 0) {
+      if (it == macros_.end() || std::find(expanding_.begin(), expanding_.end(),
+                                           name) != expanding_.end()) {
         i = j;
         continue;
       }
       const std::size_t where = at.value_or(i);
-      std::set<std::string> inner = disabled;
-      inner.insert(name);
+      count_work(where, kUseWork);
       if (!it->second.parameters) {
-        return Use{i, j, expand(it->second.body, inner, where)};
+        // A macro without parameters expands the same wherever it stands
+        // outside other macros: its expansion is kept until a #define or
+        // #undef changes the table.
+        const bool outermost = expanding_.empty();
+        if (outermost) {
+          const auto known = expansions_.find(name);
+          if (known != expansions_.end()) return Use{i, j, known->second};
+        }
+        expanding_.push_back(name);
+        std::string expansion = expand(it->second.body, where);
+        expanding_.pop_back();
+        if (outermost) expansions_[name] = expansion;
+        return Use{i, j, std::move(expansion)};
       }
       std::size_t open = j;
       while (open < text.size() && (is_space(text[open]) || text[open] == '\n'))
@@ -309,8 +359,7 @@ class Preprocessor {
       std::vector<std::string> arguments;
       const std::size_t after =
           read_arguments(text, open, arguments, name, where);
-      return Use{i, after,
-                 call(it->second, std::move(arguments), disabled, name, where)};
+      return Use{i, after, call(it->second, std::move(arguments), name, where)};
     }
     return std::nullopt;
   }
@@ -360,8 +409,7 @@ class Preprocessor {
   }
 
   std::string call(const Macro& macro, std::vector<std::string> arguments,
-                   std::set<std::string> disabled, const std::string& name,
-                   std::size_t at) {
+                   const std::string& name, std::size_t at) {
     const std::size_t wanted = macro.parameters->size();
     if (wanted == 0 && arguments.size() == 1 && arguments.front().empty()) {
       arguments.clear();
@@ -376,9 +424,10 @@ class Preprocessor {
       message += std::to_string(arguments.size());
       fail(at, std::move(message));
     }
-    for (std::string& argument : arguments) {
-      argument = expand(argument, disabled, at);
-    }
+    // C expands an argument before substituting it; one that the body
+    // does not use is never expanded (its expansion would be thrown
+    // away), and one used several times is expanded once.
+    std::vector<std::optional<std::string>> expanded(arguments.size());
     std::string substituted;
     const std::string& body = macro.body;
     for (std::size_t i = 0; i < body.size();) {
@@ -394,27 +443,34 @@ class Preprocessor {
       if (p == macro.parameters->end()) {
         substituted += word;
       } else {
-        substituted +=
-            arguments[static_cast<std::size_t>(p - macro.parameters->begin())];
+        const auto k = static_cast<std::size_t>(p - macro.parameters->begin());
+        if (!expanded[k]) expanded[k] = expand(arguments[k], at);
+        substituted += *expanded[k];
+        if (substituted.size() > kMaxExpansion) {
+          fail(at, "a macro expands to too much");
+        }
       }
       i = j;
     }
-    disabled.insert(name);
-    return expand(substituted, disabled, at);
+    expanding_.push_back(name);
+    std::string out = expand(substituted, at);
+    expanding_.pop_back();
+    return out;
   }
 
   // Expands the macros of a text that is not in the source (a body, an
   // argument); errors are placed at `at`, the use that led here.
-  std::string expand(const std::string& text,
-                     const std::set<std::string>& disabled, std::size_t at) {
+  std::string expand(const std::string& text, std::size_t at) {
     if (++depth_ > kMaxDepth) fail(at, "macros expand too deeply");
+    count_work(at, kUseWork + text.size());
     std::string out;
     std::size_t copied = 0;
-    for (auto use = next_use(text, 0, disabled, at); use;
-         use = next_use(text, use->after, disabled, at)) {
+    for (auto use = next_use(text, 0, at); use;
+         use = next_use(text, use->after, at)) {
       out.append(text, copied, use->begin - copied);
       out += use->expansion;
       copied = use->after;
+      count_work(at, use->expansion.size());
       if (out.size() > kMaxExpansion) fail(at, "a macro expands to too much");
     }
     out.append(text, copied);
@@ -464,6 +520,7 @@ class Preprocessor {
     }
     if (word == "undef") {
       macros_.erase(std::string(trim(rest)));
+      expansions_.clear();
       return;
     }
     if (word == "pragma" || word == "line" || word == "warning") return;
@@ -504,19 +561,16 @@ class Preprocessor {
     if (include_depth_ >= kMostIncludeDepth) {
       fail(begin, "#include nested too deeply (a file that includes itself?)");
     }
-    const std::filesystem::path path =
-        std::filesystem::path(source_.name()).parent_path() / name;
-    std::error_code ignored;
-    if (!std::filesystem::is_regular_file(path, ignored)) {
-      std::string message = "#include \"";
-      message += name;
-      message += "\": no such file beside this one (";
-      message += path.string();
-      message += ")";
-      fail(begin, std::move(message));
+    if (++budget_.includes > kMostIncludes) {
+      fail(begin, "more than " + std::to_string(kMostIncludes) +
+                      " #include directives read in all (files that "
+                      "include each other many times?)");
     }
-    const std::shared_ptr<const SourceFile> included =
-        read_as_windows_1252(load_source(path));
+    if (options_.companions == nullptr) {
+      fail(begin, "#include \"" + name + "\": this text has no folder");
+    }
+    const std::shared_ptr<const SourceFile> included = read_as_windows_1252(
+        options_.companions->load(source_, begin, "#include", name));
     check_text(*included);
     std::shared_ptr<const SourceFile> text =
         Preprocessor(*included, *this).run();
@@ -524,6 +578,7 @@ class Preprocessor {
   }
 
   void define(std::size_t begin, std::size_t end, std::size_t i) {
+    expansions_.clear();
     while (i < end && is_space(clean_[i])) ++i;
     const std::size_t name_begin = i;
     while (i < end && is_ident_char(clean_[i])) ++i;
@@ -656,8 +711,10 @@ class Preprocessor {
     for (const auto& [name, body] : constants_) {
       macros_[name] = Macro{std::nullopt, "(" + body + ")"};
     }
-    std::string expanded = expand(resolved, {}, at);
+    expansions_.clear();
+    std::string expanded = expand(resolved, at);
     macros_ = std::move(saved);
+    expansions_.clear();
     std::string numeric;
     for (std::size_t i = 0; i < expanded.size();) {
       if (is_ident_start(expanded[i])) {
@@ -689,6 +746,12 @@ class Preprocessor {
 
   static constexpr int kMaxDepth = 200;
   static constexpr int kMostIncludeDepth = 16;
+  static constexpr std::size_t kMostIncludes = 1000;
+  // Well under a second of expanding, four times the largest text a file
+  // may come to.
+  static constexpr std::size_t kMaxWork = std::size_t{64} << 20U;
+  // A use or an expansion counts as this many bytes besides its text.
+  static constexpr std::size_t kUseWork = 64;
   static constexpr std::size_t kMaxExpansion = std::size_t{1} << 20U;
 
   const SourceFile& source_;
@@ -700,6 +763,12 @@ class Preprocessor {
   std::map<std::string, std::string> own_constants_;
   std::map<std::string, Macro>& macros_;
   std::map<std::string, std::string>& constants_;
+  // The expansions of macros without parameters outside other macros.
+  std::map<std::string, std::string> own_expansions_;
+  std::map<std::string, std::string>& expansions_;
+  Budget own_budget_;
+  Budget& budget_;
+  std::vector<std::string> expanding_;  // the macros being expanded
   std::set<std::string> overridden_;
   std::vector<Condition> conditions_;
   int depth_ = 0;

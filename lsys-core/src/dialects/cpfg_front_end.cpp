@@ -13,6 +13,7 @@
 #include <system_error>
 
 #include "dialects/c_preprocessor.hpp"
+#include "dialects/companion_files.hpp"
 #include "dialects/cpfg_contour.hpp"
 #include "dialects/cpfg_functions.hpp"
 #include "dialects/cpfg_surface.hpp"
@@ -112,17 +113,31 @@ std::optional<std::filesystem::path> only_file(
 }
 
 // The view file cpfg would be given: the one named, else the `.v` of the
-// same name, else the only `.v` in the folder.
-std::optional<std::filesystem::path> find_view(const SourceFile& source,
-                                               const ParseOptions& options) {
+// same name, else the only `.v` in the folder. One found by looking must
+// be a file the model may read (a `.v` in a downloaded folder may be a
+// link to any file of the user's).
+std::optional<std::filesystem::path> find_view(
+    const SourceFile& source, const ParseOptions& options,
+    const CompanionFiles& companions) {
   if (!options.view_file.empty()) return options.view_file;
   std::error_code ec;
   const std::filesystem::path l(source.name());
   if (!std::filesystem::is_regular_file(l, ec)) return std::nullopt;
   std::filesystem::path same = l;
   same.replace_extension(".v");
-  if (std::filesystem::is_regular_file(same, ec)) return same;
-  return only_file(l.parent_path(), ".v");
+  std::optional<std::filesystem::path> found;
+  if (std::filesystem::exists(std::filesystem::symlink_status(same, ec))) {
+    found = same;
+  } else {
+    found = only_file(l.parent_path(), ".v");
+  }
+  if (found) {
+    if (const auto why = companions.refusal(*found)) {
+      throw ParseError(Diagnostic{.file = found->string(),
+                                  .message = "the view file: " + *why});
+    }
+  }
+  return found;
 }
 
 Draft notation(const CpfgView& view) {
@@ -227,27 +242,30 @@ struct Functions {
   std::vector<std::pair<std::string, std::string>> names;
 };
 
-Functions read_functions(const CpfgView& view,
-                         const std::filesystem::path& view_path) {
+// A function file named several times is read and sampled once.
+Functions read_functions(const CpfgView& view, CompanionFiles& companions) {
   Functions out;
   std::vector<CpfgFunction> functions;
-  const auto folder = view_path.parent_path();
-  const auto load = [&](const std::string& name) {
-    const auto file = load_source(folder / name);
-    check_text(*file);
-    for (CpfgFunction& f : read_cpfg_functions(*file)) {
-      functions.push_back(std::move(f));
+  std::map<std::string, std::vector<CpfgFunction>> read;
+  const auto load = [&](const ViewFileName& file, std::string_view what) {
+    auto& cached = read[file.name];
+    if (cached.empty()) {
+      const auto source =
+          companions.load(*view.source, file.offset, what, file.name);
+      check_text(*source);
+      cached = read_cpfg_functions(*source);
     }
+    functions.insert(functions.end(), cached.begin(), cached.end());
   };
-  if (!view.function_set.empty()) {
-    load(view.function_set);
+  if (view.function_set) {
+    load(*view.function_set, "function set:");
     for (std::size_t i = 0; i < functions.size(); ++i) {
       if (!functions[i].name.empty()) {
         out.names.emplace_back(functions[i].name, std::to_string(i + 1));
       }
     }
   }
-  for (const std::string& name : view.functions) load(name);
+  for (const ViewFileName& name : view.functions) load(name, "function:");
   if (functions.empty()) return out;
   auto table = std::make_shared<FunctionTable>();
   for (CpfgFunction& f : functions) table->push_back(std::move(f.samples));
@@ -261,11 +279,11 @@ struct Surfaces {
   std::vector<Surface> meshes;
 };
 
-Surfaces read_surfaces(const CpfgView& view,
-                       const std::filesystem::path& view_path) {
+Surfaces read_surfaces(const CpfgView& view, CompanionFiles& companions) {
   Surfaces out;
   for (const CpfgView::SurfaceLine& line : view.surfaces) {
-    const auto file = load_source(view_path.parent_path() / line.file);
+    const auto file = companions.load(*view.source, line.file.offset,
+                                      "surface:", line.file.name);
     check_text(*file);
     std::string name = "~";
     name += line.id;
@@ -279,10 +297,11 @@ Surfaces read_surfaces(const CpfgView& view,
 }
 
 std::map<int, Contour> read_contours(const CpfgView& view,
-                                     const std::filesystem::path& view_path) {
+                                     CompanionFiles& companions) {
   std::map<int, Contour> out;
   for (const CpfgView::ContourLine& line : view.contours) {
-    const auto file = load_source(view_path.parent_path() / line.file);
+    const auto file = companions.load(*view.source, line.file.offset,
+                                      "contour:", line.file.name);
     check_text(*file);
     out[line.id] = read_cpfg_contour(*file);
   }
@@ -307,31 +326,39 @@ Grammar read_with_view(
     const std::function<Grammar(std::shared_ptr<const SourceFile>, Draft)>&
         read,
     const std::vector<std::string>& ignored_headers) {
+  CompanionFiles companions(source->name(), options);
   CpfgView view;
-  std::optional<std::filesystem::path> view_path = find_view(*source, options);
+  std::optional<std::filesystem::path> view_path =
+      find_view(*source, options, companions);
   if (view_path) {
     const auto view_source = read_as_windows_1252(load_source(*view_path));
     check_text(*view_source);
-    view = read_cpfg_view(*view_source);
-    if (!ignored_headers.empty() && view.function_set.empty() &&
+    view = read_cpfg_view(*view_source, companions);
+    if (!ignored_headers.empty() && !view.function_set &&
         view.functions.empty()) {
       // lpfg is given its function set on the command line (the object's
       // `specifications`): the folder's only `.fset`, if it has one.
       if (const auto fset = only_file(view_path->parent_path(), ".fset")) {
-        view.function_set = fset->filename().string();
+        if (const auto why = companions.refusal(*fset)) {
+          throw ParseError(Diagnostic{.file = fset->string(),
+                                      .message = "the function set: " + *why});
+        }
+        view.function_set =
+            ViewFileName{.name = fset->filename().string(), .offset = 0};
       }
     }
   }
   const Functions functions =
-      view_path ? read_functions(view, *view_path) : Functions{};
-  auto preprocessed = preprocess(
-      *source, PreprocessOptions{.defines = options.defines,
-                                 .tab_continues = true,
-                                 .predefined = functions.names,
-                                 .ignored_headers = ignored_headers});
-  Surfaces surfaces = view_path ? read_surfaces(view, *view_path) : Surfaces{};
+      view_path ? read_functions(view, companions) : Functions{};
+  auto preprocessed =
+      preprocess(*source, PreprocessOptions{.defines = options.defines,
+                                            .tab_continues = true,
+                                            .predefined = functions.names,
+                                            .ignored_headers = ignored_headers,
+                                            .companions = &companions});
+  Surfaces surfaces = view_path ? read_surfaces(view, companions) : Surfaces{};
   std::map<int, Contour> contours =
-      view_path ? read_contours(view, *view_path) : std::map<int, Contour>{};
+      view_path ? read_contours(view, companions) : std::map<int, Contour>{};
   Draft draft = notation(view);
   draft.functions = functions.table;
   for (const std::string& name : surfaces.names) {

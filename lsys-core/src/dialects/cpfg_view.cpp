@@ -18,6 +18,7 @@
 
 #include "dialects/c_preprocessor.hpp"
 #include "lsys/diagnostic.hpp"
+#include "lsys/module_string.hpp"
 
 namespace lsys::dialects {
 namespace {
@@ -115,12 +116,13 @@ class ViewReader {
     return text_.substr(at, i - at);
   }
 
-  std::string_view file_name(std::size_t& i, std::size_t end) const {
+  ViewFileName file_name(std::size_t& i, std::size_t end) const {
     skip_blanks(i, end);
     const std::size_t at = i;
     while (i < end && text_[i] != ' ' && text_[i] != '\t' && text_[i] != '\r')
       ++i;
-    return text_.substr(at, i - at);
+    return ViewFileName{.name = std::string(text_.substr(at, i - at)),
+                        .offset = at};
   }
 
   // A `tropism:` or `torque:` line, read as cpfg's read_movement: letters
@@ -270,15 +272,15 @@ class ViewReader {
       // `surface: l leaf.s 1 8 4`, or `surface: leaf.s …`, whose id is the
       // file name's first letter.
       CpfgView::SurfaceLine line;
-      std::string_view first = file_name(v, end);
-      if (first.size() == 1) {
-        line.id = first.front();
+      ViewFileName first = file_name(v, end);
+      if (first.name.size() == 1) {
+        line.id = first.name.front();
         first = file_name(v, end);
-      } else if (!first.empty()) {
-        line.id = first.front();
+      } else if (!first.name.empty()) {
+        line.id = first.name.front();
       }
-      if (first.empty()) fail(colon + 1, "expected a surface file");
-      line.file = std::string(first);
+      if (first.name.empty()) fail(colon + 1, "expected a surface file");
+      line.file = std::move(first);
       skip_blanks(v, end);
       if (v < end) line.size = number(v, end);
       skip_blanks(v, end);
@@ -295,25 +297,33 @@ class ViewReader {
       const double id = number(v, end);
       if (id != static_cast<int>(id)) fail(at, "expected a contour id");
       line.id = static_cast<int>(id);
-      const std::string_view file = file_name(v, end);
-      if (file.empty()) fail(v, "expected a contour file");
-      line.file = std::string(file);
+      ViewFileName file = file_name(v, end);
+      if (file.name.empty()) fail(v, "expected a contour file");
+      line.file = std::move(file);
       view_.contours.push_back(std::move(line));
     } else if (label == "contour sides") {
-      // cpfg draws at least 3 sides.
+      // cpfg draws at least 3 sides; lsolid at most kMostContourSides.
+      const std::size_t at = v;
       const double sides = number(v, end);
       view_.contour_sides =
           static_cast<int>(std::clamp(sides, 3.0, double{kMostContourSides}));
+      if (sides != *view_.contour_sides) {
+        std::string what = "contour sides: ";
+        append_number(what, sides);
+        what += " is outside 3 to " + std::to_string(kMostContourSides) +
+                ": taken as " + std::to_string(*view_.contour_sides);
+        warn_plainly(at, what);
+      }
     } else if (label == "twist of cylinders") {
       view_.twist_cylinders = word(v, end).starts_with("on");
     } else if (label == "function" || label == "function set") {
       std::size_t k = v;
-      const std::string_view file = file_name(k, end);
-      if (file.empty()) fail(v, "expected a file name");
+      ViewFileName file = file_name(k, end);
+      if (file.name.empty()) fail(v, "expected a file name");
       if (label == "function") {
-        view_.functions.emplace_back(file);
+        view_.functions.push_back(std::move(file));
       } else {
-        view_.function_set = std::string(file);
+        view_.function_set = std::move(file);
       }
     } else if (label == "tropism" || label == "torque") {
       movement(v, end,
@@ -335,13 +345,16 @@ class ViewReader {
   }
 
   void warn(std::size_t at, std::string_view what) {
+    warn_plainly(at, std::string(what) + " left out, as cpfg does");
+  }
+
+  void warn_plainly(std::size_t at, std::string_view what) {
     const SourceLocation where = source_.location(at);
     std::string warning = source_.name();
     warning += ':';
     warning += std::to_string(where.line);
     warning += ": ";
     warning += what;
-    warning += " left out, as cpfg does";
     view_.warnings.push_back(std::move(warning));
   }
 
@@ -352,10 +365,13 @@ class ViewReader {
 
 }  // namespace
 
-CpfgView read_cpfg_view(const SourceFile& view) {
-  const auto preprocessed =
-      preprocess(view, PreprocessOptions{.keep_constants = false});
-  return ViewReader(*preprocessed).run();
+CpfgView read_cpfg_view(const SourceFile& view, CompanionFiles& companions) {
+  auto preprocessed = preprocess(
+      view,
+      PreprocessOptions{.keep_constants = false, .companions = &companions});
+  CpfgView out = ViewReader(*preprocessed).run();
+  out.source = std::move(preprocessed);
+  return out;
 }
 
 }  // namespace lsys::dialects

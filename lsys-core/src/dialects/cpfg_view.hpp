@@ -2,7 +2,9 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cstddef>
 #include <glm/vec3.hpp>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +14,15 @@
 #include "lsys/source.hpp"
 
 namespace lsys::dialects {
+
+class CompanionFiles;
+
+/// A file a view file names, and the byte of the view's text (`source`)
+/// where the name is written.
+struct ViewFileName {
+  std::string name;
+  std::size_t offset = 0;
+};
 
 /// How cpfg draws `F`: lines so many pixels wide, flat ribbons, or
 /// cylinders; the last two in model units.
@@ -36,7 +47,7 @@ struct CpfgView {
   /// SIZE, meshed s × t per patch (0: the file's own).
   struct SurfaceLine {
     char id = 0;
-    std::string file;
+    ViewFileName file;
     double size = 1.0;
     int s = 0;
     int t = 0;
@@ -45,7 +56,7 @@ struct CpfgView {
   /// A `contour:` line: `@#(id)` sweeps the contour in `file`.
   struct ContourLine {
     int id = 0;
-    std::string file;
+    ViewFileName file;
   };
   std::vector<ContourLine> contours;
   /// `contour sides`: points around a generalized cylinder's ring (3 to
@@ -55,16 +66,20 @@ struct CpfgView {
   /// smoothly from one control point's frame to the next.
   std::optional<bool> twist_cylinders;
   /// `function:` files in order (func's ids from 1), or a `function set:`.
-  std::vector<std::string> functions;
-  std::string function_set;
+  std::vector<ViewFileName> functions;
+  std::optional<ViewFileName> function_set;
   std::vector<std::string> warnings;  ///< commands cpfg does not know
+  /// The view's text once preprocessed, where the file names are.
+  std::shared_ptr<const SourceFile> source;
 };
 
-/// Reads a view file, preprocessed as cpfg does (comments, `#define`).
-/// A command is a label up to the first `:` and values after it; later
-/// commands override earlier ones (docs/dialects/cpfg.md).
+/// Reads a view file, preprocessed as cpfg does (comments, `#define`,
+/// `#include` of the files `companions` allows). A command is a label up
+/// to the first `:` and values after it; later commands override earlier
+/// ones (docs/dialects/cpfg.md).
 /// @throws ParseError at a value that is not the number(s) its command
-///   takes.
-[[nodiscard]] CpfgView read_cpfg_view(const SourceFile& view);
+///   takes, and as preprocess.
+[[nodiscard]] CpfgView read_cpfg_view(const SourceFile& view,
+                                      CompanionFiles& companions);
 
 }  // namespace lsys::dialects

@@ -11,6 +11,7 @@
 // (interpret.js). What it draws and lsolid cannot is refused by name
 // (docs/dialects/lowclouds.md).
 #include "dialects/c_preprocessor.hpp"
+#include "dialects/companion_files.hpp"
 #include "dialects/front_ends.hpp"
 
 namespace lsys::dialects {
@@ -98,10 +99,12 @@ Draft notation() {
 
 Grammar read_lowclouds(std::shared_ptr<const SourceFile> source,
                        const ParseOptions& options) {
+  CompanionFiles companions(source->name(), options);
   auto preprocessed =
       preprocess(*source, PreprocessOptions{.defines = options.defines,
                                             .indent_continues = true,
-                                            .line_comments = false});
+                                            .line_comments = false,
+                                            .companions = &companions});
   Grammar grammar = read_ls_lines(std::move(preprocessed), options, notation(),
                                   LsVariant::Lowclouds);
   refuse_parameterised_braces(

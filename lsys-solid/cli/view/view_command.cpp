@@ -6,20 +6,20 @@
 #include <unistd.h>
 
 #include <cstdio>
-#include <filesystem>
 #include <thread>
 
 #include "commands.hpp"
 #include "lsolid/errors.hpp"
+#include "lsys/source.hpp"
 #include "view/view_builder.hpp"
 #include "view/view_server.hpp"
 
 namespace lsolid::cli {
 
 void run_view(const ViewCommand& command) {
-  if (!std::filesystem::is_regular_file(command.input.file)) {
-    throw IoError(command.input.file + ": no such file");
-  }
+  // Refused as a build refuses it (a FIFO, a device, a folder), before
+  // the server starts.
+  (void)lsys::load_source(command.input.file);
   if (!view::is_loopback(command.host)) {
     std::fprintf(stderr,
                  "warning: serving on %s: anyone who can reach this address "

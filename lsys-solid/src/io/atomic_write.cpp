@@ -14,6 +14,7 @@
 
 #include "lsolid/errors.hpp"
 #include "lsolid/output_file.hpp"
+#include "lsys/source.hpp"
 
 namespace lsolid {
 namespace {
@@ -21,22 +22,6 @@ namespace {
 [[noreturn]] void fail(const std::filesystem::path& path,
                        const std::string& what) {
   throw IoError(path.string() + ": " + what);
-}
-
-const char* kind_of(std::filesystem::file_type type) {
-  switch (type) {
-    case std::filesystem::file_type::directory:
-      return "a directory";
-    case std::filesystem::file_type::fifo:
-      return "a FIFO (named pipe)";
-    case std::filesystem::file_type::character:
-    case std::filesystem::file_type::block:
-      return "a device";
-    case std::filesystem::file_type::socket:
-      return "a socket";
-    default:
-      return "not a regular file";
-  }
 }
 
 }  // namespace
@@ -54,9 +39,10 @@ std::filesystem::path output_target(const std::filesystem::path& path) {
     }
     if (status.type() == std::filesystem::file_type::regular) return target;
     if (status.type() != std::filesystem::file_type::symlink) {
-      throw IoError(
-          "'" + path.string() + "' is " + (target == path ? "" : "a link to ") +
-          kind_of(status.type()) + "; lsolid writes only regular files");
+      throw IoError("'" + path.string() + "' is " +
+                    (target == path ? "" : "a link to ") +
+                    std::string(lsys::describe_file_type(status.type())) +
+                    "; lsolid writes only regular files");
     }
     if (links == kMostLinks) {
       throw IoError("'" + path.string() +

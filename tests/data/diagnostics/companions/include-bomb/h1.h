@@ -1,0 +1,6 @@
+#include "h2.h"
+#include "h2.h"
+#include "h2.h"
+#include "h2.h"
+#include "h2.h"
+#include "h2.h"

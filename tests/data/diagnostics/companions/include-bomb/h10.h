@@ -1,0 +1,6 @@
+#include "h11.h"
+#include "h11.h"
+#include "h11.h"
+#include "h11.h"
+#include "h11.h"
+#include "h11.h"

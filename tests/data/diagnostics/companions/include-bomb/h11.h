@@ -1,0 +1,6 @@
+#include "h12.h"
+#include "h12.h"
+#include "h12.h"
+#include "h12.h"
+#include "h12.h"
+#include "h12.h"

@@ -1,0 +1,6 @@
+#include "h13.h"
+#include "h13.h"
+#include "h13.h"
+#include "h13.h"
+#include "h13.h"
+#include "h13.h"

@@ -1,0 +1,6 @@
+#include "h14.h"
+#include "h14.h"
+#include "h14.h"
+#include "h14.h"
+#include "h14.h"
+#include "h14.h"

@@ -1,0 +1,6 @@
+#include "h15.h"
+#include "h15.h"
+#include "h15.h"
+#include "h15.h"
+#include "h15.h"
+#include "h15.h"

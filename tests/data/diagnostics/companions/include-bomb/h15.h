@@ -1,0 +1,1 @@
+#define LEAF 1

@@ -1,0 +1,6 @@
+#include "h3.h"
+#include "h3.h"
+#include "h3.h"
+#include "h3.h"
+#include "h3.h"
+#include "h3.h"

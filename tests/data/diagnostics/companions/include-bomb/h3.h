@@ -1,0 +1,6 @@
+#include "h4.h"
+#include "h4.h"
+#include "h4.h"
+#include "h4.h"
+#include "h4.h"
+#include "h4.h"

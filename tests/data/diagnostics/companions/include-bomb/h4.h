@@ -1,0 +1,6 @@
+#include "h5.h"
+#include "h5.h"
+#include "h5.h"
+#include "h5.h"
+#include "h5.h"
+#include "h5.h"

@@ -1,0 +1,6 @@
+#include "h6.h"
+#include "h6.h"
+#include "h6.h"
+#include "h6.h"
+#include "h6.h"
+#include "h6.h"

@@ -1,0 +1,6 @@
+#include "h7.h"
+#include "h7.h"
+#include "h7.h"
+#include "h7.h"
+#include "h7.h"
+#include "h7.h"

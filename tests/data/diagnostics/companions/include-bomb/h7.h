@@ -1,0 +1,6 @@
+#include "h8.h"
+#include "h8.h"
+#include "h8.h"
+#include "h8.h"
+#include "h8.h"
+#include "h8.h"

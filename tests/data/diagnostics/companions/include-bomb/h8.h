@@ -1,0 +1,6 @@
+#include "h9.h"
+#include "h9.h"
+#include "h9.h"
+#include "h9.h"
+#include "h9.h"
+#include "h9.h"

@@ -1,0 +1,6 @@
+#include "h10.h"
+#include "h10.h"
+#include "h10.h"
+#include "h10.h"
+#include "h10.h"
+#include "h10.h"

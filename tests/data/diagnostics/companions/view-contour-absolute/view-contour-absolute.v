@@ -1,0 +1,2 @@
+angle increment: 30
+contour: 1 /etc/hostname

@@ -1,0 +1,2 @@
+angle increment: 30
+function: /etc/passwd

@@ -1,0 +1,2 @@
+angle increment: 30
+surface: l etc/hostname

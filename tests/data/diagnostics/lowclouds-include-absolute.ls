@@ -1,0 +1,4 @@
+delta=22.5
+#include "/etc/passwd"
+axiom: F
+p1: F -> FF

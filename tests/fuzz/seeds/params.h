@@ -1,0 +1,3 @@
+#define N 2
+#define LEN 1.5
+#define GROW(x) F(x)

@@ -1371,6 +1371,32 @@ ParseError nothing_drawn_error(const Grammar& grammar,
                       "an alias block, e.g. 'aliases: Fl=F Fr=F')");
 }
 
+ParseError width_error(const Grammar& grammar, double width,
+                       std::string message) {
+  const double scale = grammar.settings.width_scale;
+  const auto at_least = [&](double v) { return std::fabs(v * scale) >= width; };
+  const auto constant =
+      find_module(grammar, {TurtleCommand::Width},
+                  [&](std::span<const Expression> parameters) {
+                    return !parameters.empty() && parameters[0].is_constant() &&
+                           at_least(parameters[0].constant_value());
+                  });
+  std::size_t place = grammar.axiom_offset;
+  if (constant) {
+    place = *constant;
+  } else if (grammar.settings.width_offset &&
+             at_least(grammar.settings.initial_width)) {
+    place = *grammar.settings.width_offset;
+  } else {
+    // A computed width, else the setting however the notation scales it
+    // (Lparser's thickness is a share of the length).
+    place = place_of(
+        grammar, {TurtleCommand::Width}, [](double) { return false; },
+        grammar.settings.width_offset.value_or(grammar.axiom_offset));
+  }
+  return error_at(*grammar.source, place, std::move(message));
+}
+
 bool uses_queries(const Grammar& grammar) {
   const auto writes_query = [&](const Successor& s) {
     return std::any_of(s.symbols().begin(), s.symbols().end(), [&](SymbolId m) {

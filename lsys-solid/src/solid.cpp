@@ -27,8 +27,11 @@
 #include "lsolid/repeated_segments.hpp"
 #include "lsolid/rounding.hpp"
 #include "lsolid/scale.hpp"
+#include "lsolid/units.hpp"
 #include "lsolid/validate.hpp"
+#include "lsys/bounds.hpp"
 #include "lsys/diagnostic.hpp"
+#include "lsys/interpretation.hpp"
 #include "union_checks.hpp"
 
 namespace lsolid {
@@ -431,6 +434,80 @@ std::optional<std::string> fills_its_box(const SolidReport& report,
       100.0 * fill, v.volume_mm3 / 1000.0, wall_mm);
 }
 
+// Fitting a model to its size shrinks its drawing with its widths: a width
+// thousands of times the drawing's extent (`!(1e200)F`, a thickness of
+// 1e308) shrinks the segments below what the tubes can be built from (at
+// a ratio of a million a union lost a part; at 1e200 the tubes are no
+// solids). Such a model is a lump at best: refuse the width at its place.
+void refuse_widths_that_dwarf_the_drawing(const lsys::Grammar& grammar,
+                                          const lsys::Skeleton& skeleton) {
+  constexpr double kMostRatio = 1e4;
+  lsys::Bounds drawing;
+  double widest = 0.0;
+  for (const lsys::Segment& s : skeleton.segments) {
+    drawing.add(s.p0);
+    drawing.add(s.p1);
+    widest = std::max({widest, s.start_diameter, s.end_diameter});
+  }
+  for (const lsys::Polygon& polygon : skeleton.polygons) {
+    for (const glm::dvec3& p : polygon.points) drawing.add(p);
+  }
+  for (const lsys::Sphere& s : skeleton.spheres) {
+    drawing.add(s.center);
+    widest = std::max(widest, s.diameter);
+  }
+  for (const lsys::Sheet& sheet : skeleton.sheets) {
+    for (const glm::dvec3& p : sheet.points) drawing.add(p);
+  }
+  const glm::dvec3 size = drawing.size();
+  const double extent = std::max({size.x, size.y, size.z});
+  if (!(extent > 0.0) || widest <= kMostRatio * extent) return;
+  throw lsys::width_error(
+      grammar, widest,
+      fmt::format("a width of {:g} units is more than {:g} times the "
+                  "drawing's extent ({:g} unit{}): fitted to its size, the "
+                  "drawing would shrink below what lsolid can build; set a "
+                  "smaller width (or `width scale:`)",
+                  widest, kMostRatio, extent, extent == 1.0 ? "" : "s"));
+}
+
+// A scale asked for (`--scale`, or the file's `scale:`) so small that the
+// drawing shrinks below a micrometre, where tubes have no length: refused
+// where it is given, as a size that cannot be met is.
+void refuse_a_scale_below_a_micrometre(const lsys::Grammar& grammar,
+                                       const lsys::Skeleton& skeleton,
+                                       const PrintSettings& print) {
+  constexpr double kFinestMm = 1e-3;
+  if (!print.scale_mm_per_unit) return;
+  const double mm_per_unit = *print.scale_mm_per_unit;
+  lsys::Bounds drawing;
+  for (const lsys::Segment& s : skeleton.segments) {
+    drawing.add(s.p0);
+    drawing.add(s.p1);
+  }
+  for (const lsys::Polygon& polygon : skeleton.polygons) {
+    for (const glm::dvec3& p : polygon.points) drawing.add(p);
+  }
+  for (const lsys::Sheet& sheet : skeleton.sheets) {
+    for (const glm::dvec3& p : sheet.points) drawing.add(p);
+  }
+  const glm::dvec3 size = drawing.size();
+  const double extent = std::max({size.x, size.y, size.z});
+  if (!(extent > 0.0) || extent * mm_per_unit >= kFinestMm) return;
+  const std::string message = fmt::format(
+      "at a scale of {:g} mm per unit the drawing spans {:g} mm, less than "
+      "the {:g} mm lsolid builds to (choose a larger scale)",
+      mm_per_unit, extent * mm_per_unit, kFinestMm);
+  // The file's `scale:` when it is the scale used, else --scale.
+  for (const lsys::ExtraSetting& s : grammar.extra_settings) {
+    if (s.key == "scale" && parse_length_mm(s.value, s.key) == mm_per_unit) {
+      throw lsys::error_at(*grammar.source, s.offset, message);
+    }
+  }
+  throw lsys::ParseError(
+      lsys::Diagnostic{.file = "--scale", .message = message});
+}
+
 // The scale asked for (`--scale`) may carry a huge drawing (`F(1e300)`)
 // far past any printer, where grid keys and exact arithmetic overflow:
 // refuse a model reaching beyond a kilometre as bad input.
@@ -477,6 +554,7 @@ Solid build_from_skeleton(const lsys::Grammar& grammar,
   if (lsys::draws_nothing(drawn)) {
     throw lsys::nothing_drawn_error(grammar, drawn);
   }
+  refuse_widths_that_dwarf_the_drawing(grammar, drawn);
   // A segment drawn again over an earlier one adds nothing to the print,
   // only coincident tubes for the union to meet face on face.
   const WithoutRepeats unique = without_repeated_segments(drawn);
@@ -508,6 +586,7 @@ Solid build_from_skeleton(const lsys::Grammar& grammar,
   // prints, its outlines and height, not by its round parts.
   FlatModel flat;
   bool is_flat = false;
+  refuse_a_scale_below_a_micrometre(grammar, skeleton, print);
   double mm_per_unit = estimate_scale(skeleton, print);
   for (int pass = 0; pass < kSizePasses; ++pass) {
     scaled = scale_skeleton(skeleton, mm_per_unit, print.wall_mm);

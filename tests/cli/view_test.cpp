@@ -261,6 +261,72 @@ TEST_F(View, RefusesAFifoOrADeviceAsItsFileBeforeServing) {
   }
 }
 
+// Connections that send a request's first bytes and then a byte now and
+// then, as slowly as a server waits for them, for as long as they live.
+class SlowClients {
+ public:
+  SlowClients(int port, int count) {
+    for (int i = 0; i < count; ++i) {
+      const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+      sockaddr_in address{};
+      address.sin_family = AF_INET;
+      address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+      address.sin_port = htons(static_cast<std::uint16_t>(port));
+      if (::connect(fd, reinterpret_cast<sockaddr*>(&address),
+                    sizeof(address)) == 0) {
+        const std::string start = "GET /status HTTP/1.1\r\nX-Slow: ";
+        ::send(fd, start.data(), start.size(), MSG_NOSIGNAL);
+      }
+      fds_.push_back(fd);
+    }
+    dripping_ = std::thread([this] {
+      while (!stop_) {
+        for (const int fd : fds_) ::send(fd, "a", 1, MSG_NOSIGNAL);
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+      }
+    });
+  }
+  ~SlowClients() {
+    stop_ = true;
+    dripping_.join();
+    for (const int fd : fds_) ::close(fd);
+  }
+  SlowClients(const SlowClients&) = delete;
+  SlowClients& operator=(const SlowClients&) = delete;
+
+ private:
+  std::vector<int> fds_;
+  std::atomic<bool> stop_{false};
+  std::thread dripping_;
+};
+
+TEST_F(View, AnswersItsPageWhileOtherClientsHoldSlowConnections) {
+  write("tree.ls", kTree);
+  ViewProcess view(dir_, "tree.ls");
+  view.wait_for(built);
+  // Sixty connections once left /status unanswered for 20 s: each held one
+  // of the server's threads as long as it kept sending.
+  const SlowClients slow(view.port(), 60);
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  for (int i = 0; i < 3; ++i) {
+    const RawRequest status(view.port(), "/status");
+    EXPECT_EQ(status.status_line(), "HTTP/1.1 200 OK\r") << i;
+  }
+}
+
+TEST_F(View, RefusesAPortAnotherViewerListensOn) {
+  write("tree.ls", kTree);
+  ViewProcess first(dir_, "tree.ls");
+  ASSERT_FALSE(first.status().is_null());
+  // cpp-httplib's SO_REUSEPORT let a second viewer bind the port, and the
+  // kernel split the requests between two models.
+  const auto second = run_command(
+      lsolid() + " view tree.ls --port " + std::to_string(first.port()), dir_);
+  EXPECT_EQ(second.exit_code, 4);
+  EXPECT_EQ(second.err, "error: cannot listen on 127.0.0.1:" +
+                            std::to_string(first.port()) + "\n");
+}
+
 TEST_F(View, ServesItsPageAndNothingElse) {
   write("tree.ls", kTree);
   ViewProcess view(dir_, "tree.ls");

@@ -127,6 +127,10 @@ struct Settings {
   std::optional<std::size_t> derivation_length_offset;
   /// Byte offset of the `step` setting's value, if the file has one.
   std::optional<std::size_t> step_offset;
+  /// Byte offset of the value that sets the initial width (`width:`,
+  /// Lparser's thickness, L-system Explorer's `stemsize`), if the file
+  /// has one.
+  std::optional<std::size_t> width_offset;
   /// Byte offset of the `seed` setting's value, if the file has one (cpfg
   /// makes an L-system stochastic only with it).
   std::optional<std::size_t> seed_offset;

@@ -211,6 +211,7 @@ class LparserReader : TextScan {
         number(word, "the thickness (a percentage of length)");
     if (thickness < 0) fail(word.begin, "expected a non-negative number");
     s.initial_width = thickness / 100.0;
+    s.width_offset = word.begin;
   }
 
   static void set_notation(Draft& draft) {

@@ -107,9 +107,11 @@ void SettingsReader::read_settings() {
         break;
       case Key::Width:
         s.initial_width = positive(v, true);
+        s.width_offset = v.begin;
         break;
       case Key::Radius:
         s.initial_width = 2.0 * positive(v, true);
+        s.width_offset = v.begin;
         break;
       case Key::WidthIncrement:
         s.width_increment = number(v);

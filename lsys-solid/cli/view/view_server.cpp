@@ -8,6 +8,7 @@
 
 #include <fcntl.h>
 #include <httplib.h>
+#include <sys/socket.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -28,8 +29,17 @@ namespace {
 constexpr int kEventWaitMs = 2000;
 // The largest request body: the controls are a few hundred bytes.
 constexpr std::size_t kMaxBodyBytes = 64 * 1024;
-// The server's threads: the event streams and as many more for the rest.
-constexpr std::size_t kThreads = kMaxStreams + 8;
+// The server's threads: the event streams and many more for the rest. A
+// thread serves one connection at a time, however slowly its client
+// sends, so a few slow clients (sixty local connections left /status
+// unanswered for 20 s with 24 threads) must not take them all; an idle
+// thread costs only its stack's address space.
+constexpr std::size_t kThreads = kMaxStreams + 112;
+// How long a request may pause between bytes, and an idle kept-alive
+// connection wait: the page's requests are a few hundred bytes from the
+// same machine.
+constexpr int kReadTimeoutSeconds = 1;
+constexpr int kKeepAliveSeconds = 2;
 
 Json status_json(const ViewStatus& s) {
   return Json{
@@ -96,6 +106,16 @@ ViewServer::ViewServer(ViewBuilder& builder, ServerOptions options)
       server_(std::make_unique<httplib::Server>()) {
   server_->new_task_queue = [] { return new httplib::ThreadPool(kThreads); };
   server_->set_payload_max_length(kMaxBodyBytes);
+  server_->set_read_timeout(kReadTimeoutSeconds);
+  server_->set_keep_alive_timeout(kKeepAliveSeconds);
+  // cpp-httplib sets SO_REUSEPORT, which lets a second viewer bind the same
+  // port and the kernel share the requests between two models: only
+  // SO_REUSEADDR (a restart may reuse a port in TIME_WAIT), so that a busy
+  // port is refused.
+  server_->set_socket_options([](socket_t sock) {
+    const int yes = 1;
+    ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof(yes));
+  });
   add_routes();
 }
 

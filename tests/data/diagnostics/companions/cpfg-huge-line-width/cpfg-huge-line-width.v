@@ -1,0 +1,1 @@
+initial line width: 1e300

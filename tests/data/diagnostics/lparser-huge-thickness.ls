@@ -1,0 +1,4 @@
+recursion 1
+angle 30
+thickness 1e308
+axiom F

@@ -1,0 +1,2 @@
+width: 1e200
+axiom: FF

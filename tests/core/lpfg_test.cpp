@@ -6,6 +6,7 @@
 // and what it refuses.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <glm/geometric.hpp>
 #include <string>
 
@@ -106,6 +107,23 @@ TEST(Lpfg, ReadsFunctionsOfOneReturnAndTheirCalls) {
 
 // lpfg's turtle is cpfg's: the heading starts up, Left and Right turn,
 // Sphere and Circle take radii.
+// As in lpfg, a body that does not produce has drawn its numbers: the next
+// rule leaves the module, and the next step draws anew (it once drew the
+// same rejected number for ever).
+TEST(Lpfg, KeepsTheDrawsOfABodyThatProducesNothing) {
+  const Grammar g = kLpfg.parse(
+      "#include <lpfgall.h>\nderivation length: 1000;\nmodule A();\n"
+      "module B();\nAxiom: A();\n"
+      "A(): { if (ran(1) < 0.5) produce B() A(); }\n"
+      "A(): { produce A(); }\n");
+  const std::string s = to_string(derive(g), g.alphabet);
+  const auto draws = testing::drand48_sequence(1000);
+  const auto expected = std::count_if(draws.begin(), draws.end(),
+                                      [](double u) { return u < 0.5; });
+  EXPECT_EQ(std::count(s.begin(), s.end(), 'B'), expected);
+  EXPECT_NEAR(static_cast<double>(expected), 500.0, 50.0);
+}
+
 TEST(Lpfg, DrawsWithLpfgsNamedModules) {
   const Skeleton s = interpret(kLpfg.parse(
       "#include <lpfgall.h>\nAxiom: F(1) Left(90) F(2) SB() Right(90) F(1) "

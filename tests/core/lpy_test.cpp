@@ -321,6 +321,37 @@ TEST(Lpy, RunsARandomBodyOncePerModule) {
   EXPECT_GT(std::count(s.begin(), s.end(), 'C'), 16);
 }
 
+// A body that produces nothing has still drawn its numbers, as in L-Py: the
+// next rule (`A --> A`) leaves the module, and the next step draws anew. It
+// once undid them, so the guard drew the same rejected number for ever
+// (one B in 1,000 steps where L-Py gives about 500).
+TEST(Lpy, KeepsTheDrawsOfABodyThatProducesNothing) {
+  const Grammar g = kLpy.parse(
+      "from random import *\nAxiom: A\nderivation length: 1000\n"
+      "production:\nA:\n    if random() < 0.5:\n        produce BA\n"
+      "A --> A\nendlsystem\n");
+  const std::string s = to_string(derive(g), g.alphabet);
+  // One draw a step: a B for each below one half.
+  const auto draws = testing::drand48_sequence(1000);
+  const auto expected = std::count_if(draws.begin(), draws.end(),
+                                      [](double u) { return u < 0.5; });
+  EXPECT_EQ(std::count(s.begin(), s.end(), 'B'), expected);
+  EXPECT_NEAR(static_cast<double>(expected), 500.0, 50.0);
+  // Several produce statements: the body still draws once a step, whichever
+  // branch runs or none.
+  const Grammar two = kLpy.parse(
+      "Axiom: A\nderivation length: 1000\nproduction:\nA:\n"
+      "    x = random()\n    if x < 0.3:\n        produce BA\n"
+      "    elif x < 0.6:\n        produce CA\nA --> A\nendlsystem\n");
+  const std::string t = to_string(derive(two), two.alphabet);
+  EXPECT_EQ(std::count(t.begin(), t.end(), 'B'),
+            std::count_if(draws.begin(), draws.end(),
+                          [](double u) { return u < 0.3; }));
+  EXPECT_EQ(std::count(t.begin(), t.end(), 'C'),
+            std::count_if(draws.begin(), draws.end(),
+                          [](double u) { return u >= 0.3 && u < 0.6; }));
+}
+
 TEST(Lpy, RefusesPythonARuleBodyCannotRunAtItsPlace) {
   const auto error = [](std::string_view body) {
     return located_error_of([&] {

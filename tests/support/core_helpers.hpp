@@ -5,12 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <glm/geometric.hpp>
 #include <numbers>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "lsys/derivation.hpp"
 #include "lsys/diagnostic.hpp"
@@ -92,6 +94,21 @@ struct Notation {
     return located_error_of([&] { (void)parse(text); });
   }
 };
+
+/// The numbers cpfg's `ran()`, L-Py's `random()` and lpfg's `ran()` draw in
+/// lsolid, in order: POSIX's drand48 sequence from srand48(0) (the 48-bit
+/// recurrence x ← 0x5DEECE66D·x + 11 mod 2⁴⁸ from x = 0x330E, x/2⁴⁸),
+/// written here from the standard, apart from lsolid's own code, so that
+/// counts of random outcomes can be checked against it.
+inline std::vector<double> drand48_sequence(std::size_t count) {
+  std::vector<double> out;
+  std::uint64_t x = 0x330E;
+  for (std::size_t i = 0; i < count; ++i) {
+    x = (0x5DEECE66DULL * x + 0xBULL) % (std::uint64_t{1} << 48U);
+    out.push_back(static_cast<double>(x) / static_cast<double>(1ULL << 48U));
+  }
+  return out;
+}
 
 /// Expects two points to agree to 10⁻⁹.
 inline void expect_near(const glm::dvec3& actual, const glm::dvec3& expected) {

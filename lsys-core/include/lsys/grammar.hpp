@@ -127,7 +127,9 @@ struct Production {
   /// An L-Py rule body makes one production per `produce`, each running
   /// the whole body: a run that does not select this production is undone
   /// (random draws, globals), so that the body runs once per module, as
-  /// in L-Py, and the next production's run draws the same numbers.
+  /// in L-Py, and the next production's run draws the same numbers. The
+  /// body's last production keeps its run whether or not it applies: L-Py
+  /// and lpfg keep the draws of a body that produced nothing.
   bool undo_unless_applied = false;
   /// An L-Py body that builds its successor as it runs (`nproduce`): the
   /// modules it produced (Variables::emitted) replace `successor`, which

@@ -70,6 +70,8 @@ struct ProductionText {
   /// (parse_python_statements); rhs is that produce's successor.
   std::optional<Range> python_body;
   int python_branch = 0;
+  /// How many productions the body makes (its `produce` statements).
+  int python_branches = 0;
   /// The body builds its successor as it runs (`nproduce`,
   /// Production::successor_from_body): one production, rhs an empty
   /// range.

@@ -431,11 +431,12 @@ class LpyReader : TextScan {
       return;
     }
     int branch = 0;
-    for (const auto& [begin, end] :
-         python_successors(*source_, body.begin, body.end)) {
+    const auto successors = python_successors(*source_, body.begin, body.end);
+    for (const auto& [begin, end] : successors) {
       ProductionText p{head_, std::nullopt, {Range{begin, end}}, section_};
       p.python_body = body;
       p.python_branch = ++branch;
+      p.python_branches = static_cast<int>(successors.size());
       draft_.productions.push_back(std::move(p));
     }
     if (branch == 0) {

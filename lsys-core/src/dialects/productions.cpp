@@ -232,7 +232,11 @@ void ProductionReader::read_production(const ProductionText& text) {
         parse_statements(source_, lhs.after->begin, lhs.after->end, scope);
   }
   if (text.python_body) {
-    p.undo_unless_applied = true;
+    // The body's productions but the last undo a run that does not select
+    // them; the last keeps its run's draws and globals whether or not it
+    // applies, as L-Py and lpfg keep those of a body that produces nothing.
+    p.undo_unless_applied =
+        text.python_branch > 0 && text.python_branch < text.python_branches;
     p.successor_from_body = text.python_builds;
     if (text.python_builds) modules_.read_successors_into(scope, p.successor);
     p.before = text.c_body

@@ -174,12 +174,32 @@ void print_colors(const Solid& solid, const std::vector<Rgb>& palette) {
 
 }  // namespace
 
-void run_build(const BuildCommand& command) {
-  std::filesystem::path output = command.output;
-  if (output.empty()) {
-    output =
-        std::filesystem::path(command.input.file).replace_extension(".stl");
+namespace {
+
+// The file a build writes: -o, else the input's name with .stl.
+std::filesystem::path output_of(const BuildCommand& command) {
+  if (!command.output.empty()) return command.output;
+  return std::filesystem::path(command.input.file).replace_extension(".stl");
+}
+
+}  // namespace
+
+std::string failed_build_json(const BuildCommand& command, int exit_code,
+                              const lsys::Diagnostic& error) {
+  Json where = nullptr;
+  if (!error.file.empty()) {
+    where = Json{
+        {"file", error.file}, {"line", error.line}, {"column", error.column}};
   }
+  return json_line(Json{{"output", output_of(command).string()},
+                        {"written", false},
+                        {"exit_code", exit_code},
+                        {"error", Json{{"message", error.message},
+                                       {"place", std::move(where)}}}});
+}
+
+void run_build(const BuildCommand& command) {
+  const std::filesystem::path output = output_of(command);
   MeshFormat format = MeshFormat::StlBinary;
   try {
     format = format_for(output, command.ascii);

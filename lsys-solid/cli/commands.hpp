@@ -11,6 +11,7 @@
 
 #include "lsolid/print_settings.hpp"
 #include "lsys/derivation.hpp"
+#include "lsys/diagnostic.hpp"
 #include "lsys/grammar.hpp"
 #include "lsys/interpretation.hpp"
 
@@ -128,6 +129,13 @@ class Refused : public std::runtime_error {
 /// Builds, reports and writes.
 /// @throws Refused, lsys::ParseError, GeometryError, IoError.
 void run_build(const BuildCommand& command);
+
+/// What `--json` prints for a build that failed before its report: one
+/// line, `{"output", "written": false, "exit_code", "error": {"message",
+/// "place": {"file", "line", "column"} or null}}`.
+[[nodiscard]] std::string failed_build_json(const BuildCommand& command,
+                                            int exit_code,
+                                            const lsys::Diagnostic& error);
 
 /// `lsolid view FILE`: serves a page that shows the model as it is built,
 /// and builds it again when the file is saved or a control changed.

@@ -154,6 +154,20 @@ int main(int argc, char** argv) {
     return kExitInput;
   }
   const bool is_check = check_app->parsed();
+  // A build with --json prints a JSON object whatever happens: its report,
+  // or, when it failed before one, the error (docs/cli.md).
+  const auto failed = [&](int exit_code, lsys::Diagnostic error) {
+    if (is_build && build.json) {
+      std::fputs(
+          lsolid::cli::failed_build_json(build, exit_code, error).c_str(),
+          stdout);
+      std::fflush(stdout);
+    }
+    return exit_code;
+  };
+  const auto message = [](const char* what) {
+    return lsys::Diagnostic{.message = what};
+  };
   try {
     int code = 0;
     if (is_check && !lsolid::cli::run_check(check)) code = kExitNotPrintable;
@@ -173,27 +187,30 @@ int main(int argc, char** argv) {
     return code;
   } catch (const lsys::ParseError& e) {
     std::fputs(lsys::format_diagnostic(e.diagnostic()).c_str(), stderr);
-    return kExitInput;
+    return failed(kExitInput, e.diagnostic());
   } catch (const lsolid::cli::Refused& e) {
+    // Its report, with "written": false, is out already.
     std::fprintf(stderr, "error: %s\n", e.what());
     return kExitGeometry;
   } catch (const lsolid::GeometryError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
-    return kExitGeometry;
+    return failed(kExitGeometry, message(e.what()));
   } catch (const lsolid::IoError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     // A mesh that cannot be read is check's third verdict, "unreadable".
-    return is_check ? kExitInput : kExitIo;
+    return failed(is_check ? kExitInput : kExitIo, message(e.what()));
   } catch (const std::bad_alloc&) {
     std::fputs("error: out of memory\n", stderr);
-    return kExitGeometry;
+    return failed(kExitGeometry, message("out of memory"));
   } catch (const std::exception& e) {
     // A check inside a library (CGAL's preconditions throw) that no stage
     // turned into one of lsolid's errors: still an error, never a crash.
-    std::fprintf(stderr,
-                 "error: an internal check failed (a bug in lsolid; please "
-                 "report it with this file): %s\n",
-                 e.what());
-    return kExitGeometry;
+    const std::string text =
+        std::string(
+            "an internal check failed (a bug in lsolid; please "
+            "report it with this file): ") +
+        e.what();
+    std::fprintf(stderr, "error: %s\n", text.c_str());
+    return failed(kExitGeometry, message(text.c_str()));
   }
 }

@@ -550,6 +550,34 @@ TEST_F(Build, LeavesOutSegmentsDrawnAgainAndSaysHowMany) {
       << built.out;
 }
 
+// --json prints one JSON object whatever happens: a build that fails
+// before its report says what failed, where, and with which exit code
+// (it once printed nothing).
+TEST_F(Build, SpeaksJsonWhenItFails) {
+  { std::ofstream(dir_ / "wide.ls") << "n=0\naxiom: F!(1e200)F\n"; }
+  const auto bad = run_command(lsolid() + " wide.ls --json -o w.stl", dir_);
+  EXPECT_EQ(bad.exit_code, 2);
+  const Json refused = Json::parse(bad.out);
+  EXPECT_EQ(refused["output"], "w.stl");
+  EXPECT_EQ(refused["written"], false);
+  EXPECT_EQ(refused["exit_code"], 2);
+  EXPECT_EQ(refused["error"]["place"],
+            Json::parse(R"({"file": "wide.ls", "line": 2, "column": 9})"));
+  EXPECT_NE(bad.err.find(refused["error"]["message"].get<std::string>()),
+            std::string::npos);
+  // An output in a folder that is not there: an I/O failure, without a
+  // place.
+  { std::ofstream(dir_ / "f.ls") << "\u03C9: F\n"; }
+  const auto io = run_command(lsolid() + " f.ls --json -o nowhere/f.stl", dir_);
+  EXPECT_EQ(io.exit_code, 4);
+  const Json lost = Json::parse(io.out);
+  EXPECT_EQ(lost["written"], false);
+  EXPECT_EQ(lost["exit_code"], 4);
+  EXPECT_TRUE(lost["error"]["place"].is_null());
+  EXPECT_EQ(lost["error"]["message"], "nowhere/f.stl: no folder nowhere");
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "w.stl"));
+}
+
 TEST_F(Build, IsQuietOrSpeaksJsonWhenAsked) {
   use_printable("hilbert-cube", "h.ls");
   const auto quiet = run_command(lsolid() + " h.ls -q", dir_);

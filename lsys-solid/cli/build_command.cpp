@@ -278,9 +278,9 @@ void run_build(const BuildCommand& command) {
     options.max_triangles = static_cast<std::size_t>(parse_whole_number(
         *command.max_triangles, "--max-triangles", 4, 4294967295U));
   }
-  // 3MF and STL store floats; OFF and OBJ are written to full precision.
-  options.float_coordinates =
-      format != MeshFormat::Off && format != MeshFormat::Obj;
+  // Snapped to what the format keeps (floats for STL, doubles for OFF and
+  // OBJ, grids for 3MF and OpenSCAD) before the last check.
+  options.format = format;
   options.colors = colored && options.unite;
   options.preview_colors = !preview.empty();
   options.multi_material = command.multi_material;

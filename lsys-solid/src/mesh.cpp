@@ -90,22 +90,4 @@ CavitiesFilled fill_cavities(TriangleMesh mesh) {
   return {.mesh = std::move(mesh), .removed = removed};
 }
 
-TriangleMesh round_to_float(const TriangleMesh& mesh) {
-  TriangleMesh out;
-  std::unordered_map<FloatKey, std::uint32_t, FloatKeyHash> index;
-  std::vector<std::uint32_t> remap(mesh.vertices.size());
-  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-    const FloatKey key = float_key(mesh.vertices[i]);
-    const auto [it, inserted] =
-        index.emplace(key, static_cast<std::uint32_t>(out.vertices.size()));
-    if (inserted) out.vertices.push_back(key_point(key));
-    remap[i] = it->second;
-  }
-  out.triangles.reserve(mesh.triangles.size());
-  for (const auto& t : mesh.triangles) {
-    out.triangles.push_back({remap[t[0]], remap[t[1]], remap[t[2]]});
-  }
-  return out;
-}
-
 }  // namespace lsolid

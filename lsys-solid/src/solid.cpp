@@ -47,7 +47,10 @@ constexpr double kSizeRefused = 0.01;
 // fills more than half of its bounding box (of the printables, the Hilbert
 // cube fills most, 13%, the bush 2%; the 3D Hilbert curve drawn a step
 // wide, 73%).
-constexpr double kWideRatio = 1.0;
+// A segment as wide as it is long is a thick branch, not a lump (ABOP fig.
+// 1.24c and d draw steps a width wide, and their pictures are branched
+// plants); twice as wide, the tubes swallow the branching.
+constexpr double kWideRatio = 2.0;
 constexpr double kLumpFill = 0.5;
 
 using Progress = std::function<void(std::string_view, double)>;
@@ -105,6 +108,35 @@ double clear_cut_z(const TriangleMesh& mesh, double z, double depth) {
   return best;
 }
 
+// What the output format keeps of the coordinates of `mesh` (OpenSCAD's
+// coarsest step depends on its reach).
+RoundingOptions rounding_for(const SolidOptions& options,
+                             const TriangleMesh& mesh) {
+  return {.precision =
+              precision_for(options.format, std::max(reach_mm(mesh), 1.0))};
+}
+
+// The mesh rounded to what its format keeps and mended. A `.scad` whose
+// faces cannot all be mended at OpenSCAD's six significant digits (blog
+// tree C: 43 pairs of faces finer than 10⁻⁴ mm left) is rounded to floats
+// instead, which OpenSCAD reads exactly too, with a warning that its own
+// STL export would break it.
+Rounded round_for_output(const TriangleMesh& mesh, const SolidOptions& options,
+                         std::vector<std::string>& warnings) {
+  Rounded rounded = round_and_repair(mesh, rounding_for(options, mesh));
+  if (rounded.clean || options.format != MeshFormat::Scad) return rounded;
+  const std::string warning =
+      "the model has faces finer than OpenSCAD's STL export keeps (six "
+      "significant digits): the .scad holds floats, which OpenSCAD reads as "
+      "checked, but an STL exported from OpenSCAD may intersect itself; "
+      "write the STL with lsolid";
+  if (std::find(warnings.begin(), warnings.end(), warning) == warnings.end()) {
+    warnings.push_back(warning);
+  }
+  return round_and_repair(mesh,
+                          {.precision = {.kind = Precision::Kind::Float}});
+}
+
 // A mesh cut flat and moved down onto the bed, and what rounding it took.
 struct Lowered {
   TriangleMesh mesh;
@@ -115,12 +147,12 @@ struct Lowered {
 // The mesh cut at z_mm, moved down onto z = 0, rounded and mended; nothing
 // if CGAL cannot cut it.
 std::optional<Lowered> cut_and_lower(const TriangleMesh& mesh, double z_mm,
-                                     bool float_coordinates) {
+                                     const SolidOptions& options,
+                                     std::vector<std::string>& warnings) {
   std::optional<TriangleMesh> cut = cut_below(mesh, z_mm);
   if (!cut) return std::nullopt;
   for (glm::dvec3& p : cut->vertices) p.z -= z_mm;
-  Rounded rounded =
-      round_and_repair(*cut, {.float_coordinates = float_coordinates});
+  Rounded rounded = round_for_output(*cut, options, warnings);
   CavitiesFilled filled = fill_cavities(std::move(rounded.mesh));
   return Lowered{.mesh = std::move(filled.mesh),
                  .rounding = rounded.stats,
@@ -135,9 +167,10 @@ void cut_underside(TriangleMesh& mesh, Placement& placement,
                    const SolidOptions& options, SolidReport& report) {
   const double z =
       clear_cut_z(mesh, placement.cut_z_mm, placement.cut_depth_mm);
-  std::optional<Lowered> cut =
-      cut_and_lower(mesh, z, options.float_coordinates);
-  if (!cut || !validate(cut->mesh).is_printable()) {
+  std::optional<Lowered> cut = cut_and_lower(mesh, z, options, report.warnings);
+  if (!cut ||
+      !validate_as_read(cut->mesh, rounding_for(options, cut->mesh).precision)
+           .is_printable()) {
     placement.cut_refused = true;
     placement.cut_z_mm = 0.0;
     placement.cut_depth_mm = 0.0;
@@ -174,7 +207,8 @@ void decimate_and_check(TriangleMesh& mesh, const PartsKept& kept,
       report.decimation_discarded =
           "could not be made (" + decimated.refused + ")";
     } else {
-      report.validation = validate(decimated.mesh);
+      report.validation = validate_as_read(
+          decimated.mesh, rounding_for(options, decimated.mesh).precision);
       if (!report.validation.is_printable()) {
         report.decimation_discarded = "failed the check";
       } else if (lost_in_decimation(decimated, kept, options.print.tolerance_mm,
@@ -192,7 +226,8 @@ void decimate_and_check(TriangleMesh& mesh, const PartsKept& kept,
     }
   }
   tell("check", 0.0);
-  report.validation = validate(mesh);
+  report.validation =
+      validate_as_read(mesh, rounding_for(options, mesh).precision);
   report.seconds.check = clock.lap();
   tell("check", 1.0);
 }
@@ -226,8 +261,7 @@ void unite_and_finish(std::vector<Part> parts, const SolidOptions& options,
   report.seconds.unite = clock.lap();
   tell("rounding", 0.0);
   if (options.unite) {
-    Rounded rounded = round_and_repair(
-        mesh, {.float_coordinates = options.float_coordinates});
+    Rounded rounded = round_for_output(mesh, options, report.warnings);
     accumulate(report.rounding, rounded.stats);
     CavitiesFilled filled = fill_cavities(std::move(rounded.mesh));
     mesh = std::move(filled.mesh);
@@ -236,8 +270,8 @@ void unite_and_finish(std::vector<Part> parts, const SolidOptions& options,
     if (report.placement.lies_flat && report.placement.cut_z_mm > 0.0) {
       cut_underside(mesh, report.placement, options, report);
     }
-  } else if (options.float_coordinates) {
-    mesh = round_to_float(mesh);
+  } else {
+    mesh = snapped(mesh, rounding_for(options, mesh).precision);
   }
   report.seconds.round = clock.lap();
   decimate_and_check(mesh, kept, options, report, clock, tell);
@@ -262,8 +296,7 @@ void extrude_and_finish(const FlatModel& flat, const std::vector<Part>& parts,
   report.seconds.unite = clock.lap();
   tell("union", 1.0);
   tell("rounding", 0.0);
-  Rounded rounded =
-      round_and_repair(mesh, {.float_coordinates = options.float_coordinates});
+  Rounded rounded = round_for_output(mesh, options, report.warnings);
   mesh = std::move(rounded.mesh);
   accumulate(report.rounding, rounded.stats);
   placement.moved_by_mm.z -= placement.cut_z_mm;
@@ -284,8 +317,9 @@ ColoredMesh one_volume(const Solid& whole, int color) {
 // Appends the volume of `color` to `volumes`.
 // @throws GeometryError if it is not printable.
 void add_volume(std::vector<ColoredMesh>& volumes, TriangleMesh volume,
-                int color) {
-  const ValidationReport check = validate(volume);
+                int color, const SolidOptions& options) {
+  const ValidationReport check =
+      validate_as_read(volume, rounding_for(options, volume).precision);
   if (!check.is_printable()) {
     throw GeometryError(fmt::format(
         "the volume of colour {}, less the colours below it, is not "
@@ -314,11 +348,10 @@ std::vector<ColoredMesh> flat_color_volumes(const FlatModel& flat,
     const Footprint footprint = footprint_union(own, below);
     below.insert(below.end(), own.begin(), own.end());
     if (footprint.rings.empty()) continue;
+    const TriangleMesh extruded = extrude(footprint, flat.height_mm);
     TriangleMesh volume =
-        round_and_repair(extrude(footprint, flat.height_mm),
-                         {.float_coordinates = options.float_coordinates})
-            .mesh;
-    add_volume(volumes, std::move(volume), material);
+        round_and_repair(extruded, rounding_for(options, extruded)).mesh;
+    add_volume(volumes, std::move(volume), material, options);
   }
   return volumes;
 }
@@ -358,8 +391,7 @@ std::vector<ColoredMesh> color_volumes(std::vector<Part> parts,
           fmt::format("the volume of colour {} is not printable: {}", color,
                       fmt::join(scratch.validation.problems(), "; ")));
     }
-    const RoundingOptions rounding{.float_coordinates =
-                                       options.float_coordinates};
+    const RoundingOptions rounding = rounding_for(options, whole.mesh);
     TriangleMesh volume =
         filled.triangles.empty()
             ? own
@@ -367,7 +399,7 @@ std::vector<ColoredMesh> color_volumes(std::vector<Part> parts,
     const Placement& placed = whole.report.placement;
     if (!volume.triangles.empty() && placed.lies_flat && placed.cut_z_mm > 0) {
       std::optional<Lowered> cut =
-          cut_and_lower(volume, placed.cut_z_mm, options.float_coordinates);
+          cut_and_lower(volume, placed.cut_z_mm, options, scratch.warnings);
       if (!cut || cut->mesh.triangles.empty()) {
         throw GeometryError(fmt::format(
             "the volume of colour {} could not be cut flat", color));
@@ -375,7 +407,7 @@ std::vector<ColoredMesh> color_volumes(std::vector<Part> parts,
       volume = std::move(cut->mesh);
     }
     if (!volume.triangles.empty()) {
-      add_volume(volumes, std::move(volume), color);
+      add_volume(volumes, std::move(volume), color, options);
     }
     if (filled.triangles.empty()) {
       filled = std::move(own);
@@ -410,7 +442,8 @@ std::optional<std::string> widths_dwarf_lengths(
   if (*middle <= kWideRatio) return std::nullopt;
   return fmt::format(
       "the widths dwarf the lengths: the median segment is {:.3g} times as "
-      "wide as it is long, so the model prints as a lump; if the file's "
+      "wide as it is long, so the branching is lost in the tubes; if the "
+      "file's "
       "widths are in other units than its lengths, set `width scale:` (or a "
       "smaller `width:`)",
       *middle);

@@ -161,6 +161,45 @@ test('downloads the model shown, and it checks', async () => {
   assert.equal(String(report.triangles), await reportValue('triangles'));
 });
 
+test('keeps a refused value as typed, beside its error', async () => {
+  // It once snapped back to the last good value while the error named 0.
+  await page.fill('#wall', '0');
+  await page.dispatchEvent('#wall', 'change');
+  await page.waitForSelector('#error:not([hidden])', { timeout: 30000 });
+  assert.match(await page.textContent('#error'), /--wall/);
+  assert.equal(await page.inputValue('#wall'), '0');
+  await page.click('#reset');
+  await page.waitForSelector('#error[hidden]',
+    { state: 'attached', timeout: 60000 });
+  shown = await modelAfter(shown);
+  assert.equal(await page.inputValue('#wall'), '0.8');
+});
+
+test('keeps the downloads in view, breaks the command line between words, ' +
+     'and shows overhangs from above', async () => {
+  const defines = Array.from({ length: 8 },
+    (_, i) => `#define LENGTH${i} ${i + 1}`).join('\n');
+  fs.writeFileSync(file, defines +
+    '\nn = 0\nwidth: 0.3\nsize: 40mm\nω: F(LENGTH2)[+(90)F(LENGTH1)][&(90)F(LENGTH1)]F(LENGTH0)\n');
+  shown = await modelAfter(shown);
+  await page.waitForFunction(
+    () => document.querySelectorAll('#constants label').length === 8);
+  // With a slider for each constant the downloads once fell below the fold.
+  const bottom = await page.evaluate(() =>
+    document.getElementById('download-scad').getBoundingClientRect().bottom);
+  assert.ok(bottom <= 800, `the downloads end at ${bottom} px of 800`);
+  assert.deepEqual(await page.evaluate(() => {
+    const s = getComputedStyle(document.getElementById('command'));
+    return [s.wordBreak, s.overflowWrap];
+  }), ['normal', 'break-word']);
+  // The horizontal branch overhangs: its faces show through the model.
+  assert.notEqual(await reportValue('overhang'), null);
+  assert.ok(Number(await page.evaluate(
+    () => document.body.dataset.overhangOverlay)) > 0);
+  fs.writeFileSync(file, tree(3));
+  shown = await modelAfter(shown);
+});
+
 test('shows the skeleton at once, then the build\'s progress', async () => {
   // The bush of ABOP fig. 1.25 at n = 7: 3,891 segments, whose solid takes
   // minutes; its skeleton is drawn long before.

@@ -10,6 +10,7 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
@@ -228,6 +229,88 @@ class Build : public ::testing::Test {
   }
   std::filesystem::path dir_;
 };
+
+// An OFF of the vertices (each as `read` makes of the three numbers the
+// regex `vertex` matches in `points`) and triangles (the regex `face` in
+// `triangles`, whose groups are 0-based indices, turned by `flip`).
+std::string off_of(const std::string& points, const std::string& triangles,
+                   const std::regex& vertex, const std::regex& face,
+                   const std::function<double(const std::string&)>& read,
+                   bool flip) {
+  std::vector<std::string> vertices;
+  std::vector<std::string> faces;
+  char line[128];
+  for (auto it = std::sregex_iterator(points.begin(), points.end(), vertex);
+       it != std::sregex_iterator(); ++it) {
+    std::snprintf(line, sizeof(line), "%.17g %.17g %.17g\n",
+                  read((*it)[1].str()), read((*it)[2].str()),
+                  read((*it)[3].str()));
+    vertices.emplace_back(line);
+  }
+  for (auto it = std::sregex_iterator(triangles.begin(), triangles.end(), face);
+       it != std::sregex_iterator(); ++it) {
+    faces.push_back("3 " + (*it)[1].str() + " " + (*it)[flip ? 3 : 2].str() +
+                    " " + (*it)[flip ? 2 : 3].str() + "\n");
+  }
+  std::string off = "OFF\n" + std::to_string(vertices.size()) + " " +
+                    std::to_string(faces.size()) + " 0\n";
+  for (const std::string& v : vertices) off += v;
+  for (const std::string& f : faces) off += f;
+  return off;
+}
+
+// A file lsolid calls printable stays printable as its readers read it: a
+// 3MF's six decimals read as doubles and as floats, a `.scad` as OpenSCAD
+// exports it (six significant digits) and a slicer reads that (floats).
+// The monopodial tree's 3MF once had 6 pairs of intersecting faces read as
+// doubles; OpenSCAD broke the `.scad` of ABOP fig. 1.26's plant.
+TEST_F(Build, WritesFilesThatStayPrintableAsTheirReadersReadThem) {
+  use_printable("lparser-monopodial-tree", "tree.ls");
+  const auto as_double = [](const std::string& s) {
+    return std::strtod(s.c_str(), nullptr);
+  };
+  const auto as_float = [](const std::string& s) {
+    return static_cast<double>(std::strtof(s.c_str(), nullptr));
+  };
+  const auto openscad_export = [](const std::string& s) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.6g", std::strtod(s.c_str(), nullptr));
+    return static_cast<double>(std::strtof(text, nullptr));
+  };
+  for (const char* output : {"tree.3mf", "tree.scad"}) {
+    const auto built =
+        run_command(lsolid() + " tree.ls -q -o " + output, dir_);
+    ASSERT_EQ(built.exit_code, 0) << built.err;
+  }
+  const std::string model =
+      run_command("unzip -p tree.3mf 3D/3dmodel.model", dir_).out;
+  const std::regex vertex3mf(
+      R"re(<vertex x="([^"]+)" y="([^"]+)" z="([^"]+)")re");
+  const std::regex triangle3mf(
+      R"re(<triangle v1="(\d+)" v2="(\d+)" v3="(\d+)")re");
+  const std::string scad = read_text(dir_ / "tree.scad");
+  const std::size_t faces_at = scad.find("faces = [");
+  ASSERT_NE(faces_at, std::string::npos);
+  const std::string scad_points = scad.substr(0, faces_at);
+  const std::string scad_faces = scad.substr(faces_at);
+  const std::string number = R"re(\s*(-?[0-9.e+-]+)\s*)re";
+  const std::regex vertex_scad("\\[" + number + "," + number + "," + number +
+                               "\\]");
+  const std::regex face_scad(R"re(\[(\d+), (\d+), (\d+)\])re");
+  const std::vector<std::pair<std::string, std::string>> readings{
+      {"3mf-doubles.off",
+       off_of(model, model, vertex3mf, triangle3mf, as_double, false)},
+      {"3mf-floats.off",
+       off_of(model, model, vertex3mf, triangle3mf, as_float, false)},
+      {"scad-export.off", off_of(scad_points, scad_faces, vertex_scad,
+                                 face_scad, openscad_export, true)}};
+  for (const auto& [name, off] : readings) {
+    { std::ofstream(dir_ / name) << off; }
+    const auto check = run_command(lsolid() + " check " + name, dir_);
+    EXPECT_EQ(check.exit_code, 0) << name << "\n" << check.out;
+    EXPECT_NE(check.out.find("triangles, "), std::string::npos) << name;
+  }
+}
 
 TEST_F(Build, WritesAPrintableStlAndReports) {
   const auto out = dir_ / "hilbert.stl";

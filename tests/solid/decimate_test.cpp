@@ -11,6 +11,7 @@
 #include "cgal/hausdorff.hpp"
 #include "lsolid/distance.hpp"
 #include "lsolid/errors.hpp"
+#include "lsolid/precision.hpp"
 #include "lsolid/solid.hpp"
 #include "lsolid/validate.hpp"
 #include "lsys/parser.hpp"
@@ -48,7 +49,7 @@ TriangleMesh fine_cube(int n) {
       }
     }
   }
-  return round_to_float(out);
+  return snapped(out, {.kind = Precision::Kind::Float});
 }
 
 // The union of a grammar, undecimated, as the pipeline hands it on.

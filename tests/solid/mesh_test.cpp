@@ -26,16 +26,6 @@ TEST(Mesh, AppendsWithoutABoolean) {
   EXPECT_DOUBLE_EQ(signed_volume(both), 2.0);
 }
 
-TEST(Mesh, RoundsToFloatsAndMergesVerticesThatMeet) {
-  TriangleMesh m;
-  m.vertices = {{0.1, 0, 0}, {0.1 + 1e-12, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  m.triangles = {{0, 2, 3}, {1, 3, 2}};
-  const TriangleMesh r = round_to_float(m);
-  EXPECT_EQ(r.vertices.size(), 3U);
-  EXPECT_EQ(r.vertices[0].x, static_cast<double>(0.1F));
-  EXPECT_EQ(r.triangles[1][0], 0U);
-}
-
 // A box with a sealed cavity: the cavity is its own shell, facing inward.
 TriangleMesh box_with_cavity() {
   TriangleMesh mesh = box_mesh({0, 0, 0}, {4, 4, 4});

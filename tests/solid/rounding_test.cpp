@@ -6,6 +6,7 @@
 
 #include "lsolid/boolean.hpp"
 #include "lsolid/errors.hpp"
+#include "lsolid/precision.hpp"
 #include "support/mesh_checks.hpp"
 
 namespace lsolid {
@@ -21,11 +22,13 @@ TEST(Rounding, MendsSliversThatFloatsCannotHold) {
       {box_mesh({100, 100, 100}, {101, 101, 101}), "a"},
       {box_mesh({100.5, 100, 100 + 1e-7}, {101.5, 101, 101 + 1e-7}), "b"}};
   const TriangleMesh united = union_parts(std::move(parts)).mesh;
-  const ValidationReport naive = validate(round_to_float(united));
+  const ValidationReport naive =
+      validate(snapped(united, {.kind = Precision::Kind::Float}));
   EXPECT_FALSE(naive.is_printable());
-  const auto [repaired, stats] =
-      round_and_repair(united, {.float_coordinates = true});
+  const auto [repaired, stats, clean] =
+      round_and_repair(united, {.precision = {.kind = Precision::Kind::Float}});
   expect_printable(repaired);
+  EXPECT_TRUE(clean);
   EXPECT_GT(stats.slivers_removed, 0U);
   for (const glm::dvec3& p : repaired.vertices) {
     volatile float rounded = static_cast<float>(p.x);  // see vertex_key.hpp
@@ -59,8 +62,10 @@ TEST(Rounding, AddsUpWhatLaterRoundingsMended) {
 }
 
 TEST(Rounding, LeavesACleanMeshAsItIs) {
-  const auto [box, stats] = round_and_repair(box_mesh({0, 0, 0}, {1, 2, 3}),
-                                             {.float_coordinates = true});
+  const auto [box, stats, clean] =
+      round_and_repair(box_mesh({0, 0, 0}, {1, 2, 3}),
+                       {.precision = {.kind = Precision::Kind::Float}});
+  EXPECT_TRUE(clean);
   EXPECT_EQ(box.triangles.size(), 12U);
   EXPECT_EQ(stats.passes, 1);
   EXPECT_EQ(stats.slivers_removed, 0U);

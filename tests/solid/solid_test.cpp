@@ -434,6 +434,19 @@ TEST(Solid, WarnsWhenWidthsDwarfLengths) {
       << s.report.warnings[0];
 }
 
+// A plant drawn with steps as wide as they are long (ABOP fig. 1.24c at its
+// own settings) is branched, not a lump: no warning (one came from a
+// median ratio of 1 + 7·10⁻¹⁶).
+TEST(Solid, DoesNotCallAPlantOfStepsAsWideAsLongALump) {
+  const Solid s =
+      build_solid(parse("n=2, \u03B4=22.5\nwidth: 1\n\u03C9: F\n"
+                        "F \u2192 FF-[-F+F+F]+[+F-F-F]\n"));
+  EXPECT_TRUE(s.report.validation.is_printable());
+  for (const std::string& warning : s.report.warnings) {
+    EXPECT_EQ(warning.find("dwarf"), std::string::npos) << warning;
+  }
+}
+
 TEST(Solid, BuildsABallWhereTheTurtleStandsAndNeverLaysItFlat) {
   // A stem of 10 mm and 2 mm across with a berry of 6 mm on top, and a
   // lone ball: balls of `@O` are parts of their own colour.

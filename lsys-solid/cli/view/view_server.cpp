@@ -19,6 +19,7 @@
 
 #include "lsolid/errors.hpp"
 #include "lsolid/mesh_io.hpp"
+#include "lsolid/rounding.hpp"
 #include "view/assets.hpp"
 
 namespace lsolid::cli::view {
@@ -77,10 +78,25 @@ std::string model_file(const ViewModel& model, MeshFormat format,
   }
   const std::filesystem::path path = std::filesystem::path(folder) / name;
   try {
+    // The model is built as an STL keeps it (so that its STL is the
+    // command line's); a 3MF and OpenSCAD keep other precisions.
     if (format == MeshFormat::ThreeMf) {
-      write_colored(
-          {ColoredMesh{.mesh = model.solid.mesh, .colors = model.solid.colors}},
-          path, format, model.palette);
+      const std::optional<ColoredMesh> threemf = rounded_for(
+          ColoredMesh{.mesh = model.solid.mesh, .colors = model.solid.colors},
+          format);
+      if (!threemf) {
+        throw GeometryError(
+            "the model is not printable at the precision a 3MF keeps");
+      }
+      write_colored({*threemf}, path, format, model.palette);
+    } else if (format == MeshFormat::Scad) {
+      const std::optional<TriangleMesh> scad =
+          rounded_for(model.solid.mesh, format);
+      if (!scad) {
+        throw GeometryError(
+            "the model is not printable at the precision OpenSCAD keeps");
+      }
+      write_mesh(*scad, path, format);
     } else {
       write_mesh(model.solid.mesh, path, format);
     }

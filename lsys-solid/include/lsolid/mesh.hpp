@@ -65,8 +65,4 @@ struct CavitiesFilled {
 /// @pre the mesh is closed and consistently oriented.
 [[nodiscard]] CavitiesFilled fill_cavities(TriangleMesh mesh);
 
-/// The mesh with every coordinate rounded to the nearest float, as STL
-/// stores it, and vertices that become equal merged.
-[[nodiscard]] TriangleMesh round_to_float(const TriangleMesh& mesh);
-
 }  // namespace lsolid

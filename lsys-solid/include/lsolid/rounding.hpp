@@ -3,8 +3,11 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 
+#include "lsolid/colors.hpp"
 #include "lsolid/mesh.hpp"
+#include "lsolid/precision.hpp"
 
 namespace lsolid {
 
@@ -24,27 +27,30 @@ struct RoundingStats {
 
 /// How to round.
 struct RoundingOptions {
-  /// Round to floats, as STL and 3MF store them; otherwise to doubles
-  /// (OFF and OBJ are written at full precision).
-  bool float_coordinates = true;
+  /// What the file keeps of a coordinate (floats for STL, doubles for OFF
+  /// and OBJ, grids for 3MF and OpenSCAD).
+  Precision precision;
 };
 
 /// A rounded mesh and what it took.
 struct Rounded {
   TriangleMesh mesh;
   RoundingStats stats;
+  /// The last pass found no intersecting and no degenerate face (the
+  /// passes did not run out first).
+  bool clean = false;
 };
 
 /// Adds what a later rounding of the same model mended to `total`: the
 /// counts and the volume change add up; `passes` becomes the later one's.
 void accumulate(RoundingStats& total, const RoundingStats& later);
 
-/// Rounds a union's coordinates to what the file will store (floats for STL)
-/// and mends what rounding breaks. An exact union has slivers, edges of
-/// 10⁻⁸ mm and near-tangent sheets (docs/design.md, "Rounding"); rounding
-/// them makes degenerate and self-intersecting faces. Each pass rounds,
-/// collapses edges shorter than 10⁻⁴ mm, flips caps lower than that, and
-/// rebuilds the faces that still intersect (CGAL's
+/// Rounds a union's coordinates to what the file will store (floats for STL,
+/// RoundingOptions::precision) and mends what rounding breaks. An exact union
+/// has slivers, edges of 10⁻⁸ mm and near-tangent sheets (docs/design.md,
+/// "Rounding"); rounding them makes degenerate and self-intersecting faces.
+/// Each pass rounds, collapses edges shorter than 10⁻⁴ mm, flips caps lower
+/// than that, and rebuilds the faces that still intersect (CGAL's
 /// experimental::remove_self_intersections), until none is left. Every
 /// coordinate of the result is representable in the output format, so
 /// validating the result validates the file.
@@ -52,5 +58,18 @@ void accumulate(RoundingStats& total, const RoundingStats& later);
 /// @throws GeometryError if it is not a 2-manifold.
 [[nodiscard]] Rounded round_and_repair(const TriangleMesh& mesh,
                                        const RoundingOptions& options = {});
+
+/// A printable mesh as a file of `format` keeps it (precision_for):
+/// snapped, and mended as round_and_repair mends where snapping breaks it;
+/// nothing when it is not printable at that precision. Triangles keep
+/// their order when snapping alone suffices (so a colour per triangle
+/// still fits them).
+[[nodiscard]] std::optional<TriangleMesh> rounded_for(const TriangleMesh& mesh,
+                                                      MeshFormat format);
+
+/// As rounded_for, keeping a colour per triangle: a triangle that mending
+/// made new takes the colour of a triangle that had one of its corners.
+[[nodiscard]] std::optional<ColoredMesh> rounded_for(const ColoredMesh& mesh,
+                                                     MeshFormat format);
 
 }  // namespace lsolid

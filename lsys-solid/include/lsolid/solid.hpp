@@ -13,6 +13,7 @@
 #include "lsolid/colors.hpp"
 #include "lsolid/decimate.hpp"
 #include "lsolid/mesh.hpp"
+#include "lsolid/mesh_io.hpp"
 #include "lsolid/placement.hpp"
 #include "lsolid/print_settings.hpp"
 #include "lsolid/rounding.hpp"
@@ -30,8 +31,9 @@ struct SolidOptions {
   PrintSettings print;
   /// False writes the overlapping parts without a union (`--no-union`).
   bool unite = true;
-  /// Round coordinates to floats before checking, as STL stores them.
-  bool float_coordinates = true;
+  /// The format the mesh is for: its coordinates are snapped to what that
+  /// format keeps (precision_for) before the last check.
+  MeshFormat format = MeshFormat::StlBinary;
   /// Decimate the union within `print.tolerance_mm` (needs `unite`).
   bool decimate = true;
   /// A cap on the triangles of the decimated mesh (`--max-triangles`).

@@ -60,8 +60,8 @@ struct ValidationReport {
   [[nodiscard]] std::vector<std::string> problems() const;
 };
 
-/// Checks a mesh as it stands (use round_to_float first to check what an
-/// STL file will hold).
+/// Checks a mesh as it stands (snap it first, lsolid/precision.hpp, to
+/// check what a file will hold).
 [[nodiscard]] ValidationReport validate(const TriangleMesh& mesh);
 
 }  // namespace lsolid

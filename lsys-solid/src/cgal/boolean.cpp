@@ -149,7 +149,9 @@ bool round_new_points(ExactMesh& mesh) {
 bool round_and_mend(ExactMesh& mesh) {
   const TriangleMesh rounded = to_triangle_mesh(mesh);
   const TriangleMesh mended =
-      round_and_repair(rounded, {.float_coordinates = false}).mesh;
+      round_and_repair(rounded,
+                       {.precision = {.kind = Precision::Kind::Double}})
+          .mesh;
   const std::optional<InexactMesh> check = to_surface_mesh<InexactMesh>(mended);
   if (!check || check->number_of_faces() == 0 || !CGAL::is_closed(*check) ||
       !CGAL::is_valid_polygon_mesh(*check) ||

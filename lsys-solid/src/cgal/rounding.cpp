@@ -13,6 +13,7 @@
 #include <CGAL/Polygon_mesh_processing/repair_self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <unordered_map>
@@ -28,11 +29,12 @@ constexpr int kMaxPasses = 6;
 constexpr double kShortEdgeMm = 1e-4;
 constexpr double kCapCosine = -0.985;  // angles above ~170° are caps
 
-void snap_to_float(InexactMesh& mesh) {
+void snap(InexactMesh& mesh, const Precision& precision) {
+  if (precision.kind == Precision::Kind::Double) return;
   for (const auto v : mesh.vertices()) {
     const InexactPoint& p = mesh.point(v);
-    mesh.point(v) =
-        InexactPoint(to_float(p.x()), to_float(p.y()), to_float(p.z()));
+    mesh.point(v) = InexactPoint(precision.snap(p.x()), precision.snap(p.y()),
+                                 precision.snap(p.z()));
   }
 }
 
@@ -52,21 +54,26 @@ void accumulate(RoundingStats& total, const RoundingStats& later) {
 
 Rounded round_and_repair(const TriangleMesh& input,
                          const RoundingOptions& options) {
-  const bool float_coordinates = options.float_coordinates;
+  const Precision& precision = options.precision;
+  // On a coarse grid (OpenSCAD's 10⁻³ mm) an edge or a cap a few steps
+  // small is as good as degenerate: what is collapsed or flipped grows with
+  // the step.
+  const double short_mm = std::max(kShortEdgeMm, 3.0 * precision.step_mm);
   RoundingStats stats;
   InexactMesh mesh = surface_mesh_or_throw<InexactMesh>(input, "round");
+  bool clean = false;
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     stats.passes = pass + 1;
-    if (float_coordinates) snap_to_float(mesh);
+    snap(mesh, precision);
     const std::size_t before = count_faces(mesh);
     PMP::remove_degenerate_faces(mesh);
     PMP::experimental::remove_almost_degenerate_faces(
-        faces(mesh), mesh, kCapCosine, 1.0, kShortEdgeMm,
-        CGAL::parameters::flip_triangle_height_threshold(kShortEdgeMm));
+        faces(mesh), mesh, kCapCosine, 1.0, short_mm,
+        CGAL::parameters::flip_triangle_height_threshold(short_mm));
     mesh.collect_garbage();
-    // Collapses may move vertices off the float grid: round again, and
+    // Collapses may move vertices off the grid: round again, and
     // judge the result only as it will be written.
-    if (float_coordinates) snap_to_float(mesh);
+    snap(mesh, precision);
     stats.slivers_removed += before - std::min(before, count_faces(mesh));
 
     std::vector<std::pair<InexactMesh::Face_index, InexactMesh::Face_index>>
@@ -79,7 +86,10 @@ Rounded round_and_repair(const TriangleMesh& input,
         break;
       }
     }
-    if (pairs.empty() && !has_degenerate) break;
+    if (pairs.empty() && !has_degenerate) {
+      clean = true;
+      break;
+    }
     std::set<InexactMesh::Face_index> bad;
     for (const auto& [a, b] : pairs) {
       bad.insert(a);
@@ -101,10 +111,10 @@ Rounded round_and_repair(const TriangleMesh& input,
       mesh.collect_garbage();
     }
   }
-  if (float_coordinates) snap_to_float(mesh);  // what is checked is written
+  snap(mesh, precision);  // what is checked is written
   TriangleMesh out = to_triangle_mesh(mesh);
   stats.volume_change_mm3 = signed_volume(out) - signed_volume(input);
-  return Rounded{.mesh = std::move(out), .stats = stats};
+  return Rounded{.mesh = std::move(out), .stats = stats, .clean = clean};
 }
 
 }  // namespace lsolid

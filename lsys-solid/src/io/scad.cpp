@@ -1,7 +1,9 @@
 // Copyright 2026 the lsolid authors
 // SPDX-License-Identifier: MIT
 #include <cctype>
+#include <charconv>
 #include <cstdio>
+#include <iterator>
 #include <string>
 
 #include "formats.hpp"
@@ -25,7 +27,6 @@ std::string scad_module_name(const std::filesystem::path& path) {
 std::string encode_scad(const TriangleMesh& mesh,
                         const std::filesystem::path& path) {
   std::string out;
-  char line[160];
   // OpenSCAD wants each face's points clockwise seen from outside, the
   // opposite of our counter-clockwise triangles.
   const std::string name = scad_module_name(path);
@@ -35,11 +36,23 @@ std::string encode_scad(const TriangleMesh& mesh,
       path.filename().string() + ">` and call " + name +
       "() to combine it with your own parts.\nmodule " + name +
       "() {\n  polyhedron(points = [\n";
+  // The shortest text that reads back as the very double: OpenSCAD reads
+  // doubles, and the mesh was checked at exactly these coordinates
+  // (Precision::Kind::DecimalFloat).
+  const auto number = [&](double x) {
+    char text[32];
+    const auto end = std::to_chars(std::begin(text), std::end(text), x).ptr;
+    out.append(text, end);
+  };
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
     const glm::dvec3& v = mesh.vertices[i];
-    std::snprintf(line, sizeof(line), "    [%.9g, %.9g, %.9g]%s\n", v.x, v.y,
-                  v.z, i + 1 < mesh.vertices.size() ? "," : "");
-    out += line;
+    out += "    [";
+    number(v.x);
+    out += ", ";
+    number(v.y);
+    out += ", ";
+    number(v.z);
+    out += i + 1 < mesh.vertices.size() ? "],\n" : "]\n";
   }
   out += "  ], faces = [\n";
   for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {

@@ -242,6 +242,30 @@
     geometry.computeVertexNormals();
     const mesh = new THREE.Mesh(geometry, new THREE.MeshLambertMaterial({
       vertexColors: THREE.VertexColors }));
+    // Overhanging faces face down, hidden from the usual view from above:
+    // they are drawn again through the model, faintly, so that where the
+    // supports go shows from any side.
+    let shown = 0;
+    if (shade) {
+      const through = new Float32Array(triangles * 9);
+      for (let t = 0; t < triangles; ++t) {
+        if (!overhang[t]) continue;
+        through.set(positions.subarray(t * 9, t * 9 + 9), shown * 9);
+        ++shown;
+      }
+      if (shown > 0) {
+        const g = new THREE.BufferGeometry();
+        g.setAttribute('position',
+          new THREE.BufferAttribute(through.slice(0, shown * 9), 3));
+        const overlay = new THREE.Mesh(g, new THREE.MeshBasicMaterial({
+          color: warn, transparent: true, opacity: 0.3, depthTest: false,
+          depthWrite: false, side: THREE.DoubleSide }));
+        overlay.name = 'overhang-overlay';
+        overlay.renderOrder = 1;
+        mesh.add(overlay);
+      }
+    }
+    document.body.dataset.overhangOverlay = String(shown);
     modelObject = replace(modelObject, mesh, triangles > 0);
     applyVisibility();
   }
@@ -362,7 +386,8 @@
         inputs.range.step = c.step;
         inputs.number.step = c.step;
       }
-      if (inputs.number !== active && inputs.range !== active) {
+      if (inputs.number !== active && inputs.range !== active &&
+          !touched.has('define:' + c.name)) {
         inputs.number.value = c.value;
         inputs.range.value = c.value;
       }
@@ -371,9 +396,12 @@
   function showControls(controls) {
     if (!controls) return;
     const active = document.activeElement;
+    // A value the maker typed stays as typed, even when it was refused
+    // (the error names it): only untouched fields follow the build.
     const set = (id, value) => {
       const input = $(id);
-      if (input !== active && value !== null && value !== undefined) {
+      if (input !== active && !touched.has(id) && value !== null &&
+          value !== undefined) {
         input.value = value;
       }
     };

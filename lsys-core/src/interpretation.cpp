@@ -1386,13 +1386,19 @@ ParseError width_error(const Grammar& grammar, double width,
     place = *constant;
   } else if (grammar.settings.width_offset &&
              at_least(grammar.settings.initial_width)) {
-    place = *grammar.settings.width_offset;
+    // Placed in the view file where the width comes from there (cpfg).
+    const SourceFile& source = grammar.settings.width_source
+                                   ? *grammar.settings.width_source
+                                   : *grammar.source;
+    return error_at(source, *grammar.settings.width_offset, std::move(message));
   } else {
     // A computed width, else the setting however the notation scales it
     // (Lparser's thickness is a share of the length).
     place = place_of(
         grammar, {TurtleCommand::Width}, [](double) { return false; },
-        grammar.settings.width_offset.value_or(grammar.axiom_offset));
+        grammar.settings.width_offset && !grammar.settings.width_source
+            ? *grammar.settings.width_offset
+            : grammar.axiom_offset);
   }
   return error_at(*grammar.source, place, std::move(message));
 }

@@ -5,11 +5,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "lsys/alphabet.hpp"
+#include "lsys/source.hpp"
 
 namespace lsys {
 
@@ -128,9 +130,12 @@ struct Settings {
   /// Byte offset of the `step` setting's value, if the file has one.
   std::optional<std::size_t> step_offset;
   /// Byte offset of the value that sets the initial width (`width:`,
-  /// Lparser's thickness, L-system Explorer's `stemsize`), if the file
-  /// has one.
+  /// Lparser's thickness, L-system Explorer's `stemsize`, cpfg's `initial
+  /// line width`), if the file has one.
   std::optional<std::size_t> width_offset;
+  /// The file width_offset is in when it is not the grammar's own (cpfg's
+  /// view file).
+  std::shared_ptr<const SourceFile> width_source;
   /// Byte offset of the `seed` setting's value, if the file has one (cpfg
   /// makes an L-system stochastic only with it).
   std::optional<std::size_t> seed_offset;

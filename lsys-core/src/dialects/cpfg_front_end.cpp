@@ -157,6 +157,10 @@ Draft notation(const CpfgView& view) {
   const CpfgLineStyle style = view.line_style.value_or(CpfgLineStyle::Pixel);
   s.width_scale = style == CpfgLineStyle::Pixel ? kStepsPerPixel : 1.0;
   s.initial_width = view.line_width.value_or(1.0);  // scaled as all widths
+  if (view.line_width_offset) {
+    s.width_offset = view.line_width_offset;
+    s.width_source = view.source;
+  }
   s.width_increment = view.width_increment.value_or(0.0);
   s.initial_color = view.initial_color.value_or(0);  // 0 to 511
   if (view.tropism_direction) {

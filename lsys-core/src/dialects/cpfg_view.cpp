@@ -227,6 +227,8 @@ class ViewReader {
     } else if (label == "angle increment") {
       view_.angle_deg = number(v, end);
     } else if (label == "initial line width") {
+      skip_blanks(v, end);
+      view_.line_width_offset = v;
       view_.line_width = number(v, end);
       // cpfg's code: a unit word starting with p means pixels, with s
       // cylinders; no word means flat polygons in model units.

@@ -33,6 +33,8 @@ enum class CpfgLineStyle { Pixel, Polygon, Cylinder };
 struct CpfgView {
   std::optional<double> angle_deg;   ///< `angle increment`, `angle factor`
   std::optional<double> line_width;  ///< `initial line width`
+  /// Where its value stands in `source`.
+  std::optional<std::size_t> line_width_offset;
   std::optional<CpfgLineStyle> line_style;
   std::optional<double> width_increment;  ///< `line width increment`
   std::optional<int> initial_color;

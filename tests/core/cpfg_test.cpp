@@ -1019,6 +1019,30 @@ TEST_F(CpfgFiles, SweepsAContourAlongAGeneralizedCylinderAsOneSheet) {
   }
 }
 
+TEST_F(CpfgFiles, WarnsOfContourSidesOutsideWhatItDraws) {
+  // Clamped to 3 to 256, as before, but no longer without a word.
+  write("leaf.l", "Lsystem: 1\nAxiom: F\nendlsystem\n");
+  const std::string view = (dir_ / "leaf.v").string();
+  for (const auto& [sides, taken] :
+       std::vector<std::pair<std::string, int>>{{"1000", 256}, {"1", 3}}) {
+    write("leaf.v", "contour sides: " + sides + "\n");
+    const Grammar g = read("leaf.l");
+    EXPECT_EQ(g.settings.contour_sides, taken);
+    EXPECT_NE(std::find(g.warnings.begin(), g.warnings.end(),
+                        view + ":1: contour sides: " + sides +
+                            " is outside 3 to 256: taken as " +
+                            std::to_string(taken)),
+              g.warnings.end())
+        << sides;
+  }
+  write("leaf.v", "contour sides: 12\n");
+  const Grammar quiet = read("leaf.l");
+  EXPECT_EQ(quiet.settings.contour_sides, 12);
+  for (const std::string& w : quiet.warnings) {
+    EXPECT_EQ(w.find("contour sides"), std::string::npos) << w;
+  }
+}
+
 TEST_F(CpfgFiles, TwistsAContourSmoothlyOnlyWhenTheViewAsksForIt) {
   write("leaf.l",
         "Lsystem: 1\nAxiom: @#(1) @!(4) @Gs f(3) /(90) @Ge(3)\n"

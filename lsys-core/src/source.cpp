@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <system_error>
 
 #include "lsys/alphabet.hpp"
 #include "lsys/diagnostic.hpp"
@@ -128,19 +129,8 @@ namespace {
       Diagnostic{.file = path.string(), .message = std::move(message)});
 }
 
-std::filesystem::file_type type_of(const struct stat& status) {
-  if (S_ISREG(status.st_mode)) return std::filesystem::file_type::regular;
-  if (S_ISDIR(status.st_mode)) return std::filesystem::file_type::directory;
-  if (S_ISFIFO(status.st_mode)) return std::filesystem::file_type::fifo;
-  if (S_ISCHR(status.st_mode)) return std::filesystem::file_type::character;
-  if (S_ISBLK(status.st_mode)) return std::filesystem::file_type::block;
-  if (S_ISSOCK(status.st_mode)) return std::filesystem::file_type::socket;
-  return std::filesystem::file_type::unknown;
-}
-
 void refuse_unless_regular(const std::filesystem::path& path,
-                           const struct stat& status) {
-  const std::filesystem::file_type type = type_of(status);
+                           std::filesystem::file_type type) {
   if (type == std::filesystem::file_type::regular) return;
   refuse_file(path, std::string("cannot read file: it is ") +
                         std::string(describe_file_type(type)) +
@@ -161,21 +151,23 @@ std::shared_ptr<const SourceFile> load_source(const std::filesystem::path& path,
   // for a writer, and a device may never end or act on being opened. The
   // open itself does not wait (O_NONBLOCK), and the file opened is checked
   // again, in case it was replaced in between.
-  struct stat before {};
-  if (::stat(path.c_str(), &before) != 0) {
-    refuse_file(path, std::string("cannot read file: ") + std::strerror(errno));
-  }
-  refuse_unless_regular(path, before);
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (error) refuse_file(path, "cannot read file: " + error.message());
+  refuse_unless_regular(path, status.type());
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-  if (fd < 0) {
-    refuse_file(path, std::string("cannot read file: ") + std::strerror(errno));
+  struct stat opened {};
+  if (fd < 0 || ::fstat(fd, &opened) != 0) {
+    const int why = errno;
+    if (fd >= 0) ::close(fd);
+    refuse_file(path, std::string("cannot read file: ") + std::strerror(why));
   }
   const Descriptor descriptor{fd};
-  struct stat opened {};
-  if (::fstat(fd, &opened) != 0) {
-    refuse_file(path, std::string("cannot read file: ") + std::strerror(errno));
+  if (!S_ISREG(opened.st_mode)) {
+    refuse_file(path,
+                "cannot read file: it was replaced by another kind of "
+                "file as it was opened");
   }
-  refuse_unless_regular(path, opened);
   // Read in blocks up to one byte past the limit: a huge file is refused
   // without being held.
   std::string text;

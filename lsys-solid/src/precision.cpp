@@ -161,23 +161,28 @@ ValidationReport validate_as_read(const TriangleMesh& mesh,
   return as_floats.is_printable() ? report : as_floats;
 }
 
+Rounded round_for(const TriangleMesh& mesh, MeshFormat format) {
+  Rounded rounded = round_and_repair(
+      mesh,
+      {.precision = precision_for(format, std::max(reach_mm(mesh), 1.0))});
+  if (rounded.clean || format != MeshFormat::Scad) return rounded;
+  rounded =
+      round_and_repair(mesh, {.precision = {.kind = Precision::Kind::Float}});
+  rounded.as_floats = true;
+  return rounded;
+}
+
 std::optional<TriangleMesh> rounded_for(const TriangleMesh& mesh,
                                         MeshFormat format) {
   const Precision precision =
       precision_for(format, std::max(reach_mm(mesh), 1.0));
   TriangleMesh plain = snapped(mesh, precision);
-  if (plain.triangles.size() == mesh.triangles.size() &&
-      validate_as_read(plain, precision).is_printable()) {
-    return plain;
-  }
-  TriangleMesh mended = round_and_repair(mesh, {.precision = precision}).mesh;
-  if (validate_as_read(mended, precision).is_printable()) return mended;
-  // As a build does (solid.cpp, round_for_output): a `.scad` that six
-  // significant digits break keeps floats, which OpenSCAD reads exactly.
-  if (format == MeshFormat::Scad) {
-    return rounded_for(mesh, MeshFormat::StlBinary);
-  }
-  return std::nullopt;
+  if (validate_as_read(plain, precision).is_printable()) return plain;
+  const Rounded mended = round_for(mesh, format);
+  const Precision kept =
+      mended.as_floats ? Precision{.kind = Precision::Kind::Float} : precision;
+  if (!validate_as_read(mended.mesh, kept).is_printable()) return std::nullopt;
+  return mended.mesh;
 }
 
 std::optional<ColoredMesh> rounded_for(const ColoredMesh& colored,

@@ -29,9 +29,9 @@
 #include "lsolid/scale.hpp"
 #include "lsolid/units.hpp"
 #include "lsolid/validate.hpp"
-#include "lsys/bounds.hpp"
 #include "lsys/diagnostic.hpp"
 #include "lsys/interpretation.hpp"
+#include "lsys/skeleton.hpp"
 #include "union_checks.hpp"
 
 namespace lsolid {
@@ -110,21 +110,16 @@ double clear_cut_z(const TriangleMesh& mesh, double z, double depth) {
 
 // What the output format keeps of the coordinates of `mesh` (OpenSCAD's
 // coarsest step depends on its reach).
-RoundingOptions rounding_for(const SolidOptions& options,
-                             const TriangleMesh& mesh) {
-  return {.precision =
-              precision_for(options.format, std::max(reach_mm(mesh), 1.0))};
+Precision precision_of(const SolidOptions& options, const TriangleMesh& mesh) {
+  return precision_for(options.format, std::max(reach_mm(mesh), 1.0));
 }
 
-// The mesh rounded to what its format keeps and mended. A `.scad` whose
-// faces cannot all be mended at OpenSCAD's six significant digits (blog
-// tree C: 43 pairs of faces finer than 10⁻⁴ mm left) is rounded to floats
-// instead, which OpenSCAD reads exactly too, with a warning that its own
-// STL export would break it.
+// The mesh rounded to what its format keeps and mended (round_for), with a
+// warning where a `.scad` had to keep floats.
 Rounded round_for_output(const TriangleMesh& mesh, const SolidOptions& options,
                          std::vector<std::string>& warnings) {
-  Rounded rounded = round_and_repair(mesh, rounding_for(options, mesh));
-  if (rounded.clean || options.format != MeshFormat::Scad) return rounded;
+  Rounded rounded = round_for(mesh, options.format);
+  if (!rounded.as_floats) return rounded;
   const std::string warning =
       "the model has faces finer than OpenSCAD's STL export keeps (six "
       "significant digits): the .scad holds floats, which OpenSCAD reads as "
@@ -133,8 +128,7 @@ Rounded round_for_output(const TriangleMesh& mesh, const SolidOptions& options,
   if (std::find(warnings.begin(), warnings.end(), warning) == warnings.end()) {
     warnings.push_back(warning);
   }
-  return round_and_repair(mesh,
-                          {.precision = {.kind = Precision::Kind::Float}});
+  return rounded;
 }
 
 // A mesh cut flat and moved down onto the bed, and what rounding it took.
@@ -168,9 +162,8 @@ void cut_underside(TriangleMesh& mesh, Placement& placement,
   const double z =
       clear_cut_z(mesh, placement.cut_z_mm, placement.cut_depth_mm);
   std::optional<Lowered> cut = cut_and_lower(mesh, z, options, report.warnings);
-  if (!cut ||
-      !validate_as_read(cut->mesh, rounding_for(options, cut->mesh).precision)
-           .is_printable()) {
+  if (!cut || !validate_as_read(cut->mesh, precision_of(options, cut->mesh))
+                   .is_printable()) {
     placement.cut_refused = true;
     placement.cut_z_mm = 0.0;
     placement.cut_depth_mm = 0.0;
@@ -208,7 +201,7 @@ void decimate_and_check(TriangleMesh& mesh, const PartsKept& kept,
           "could not be made (" + decimated.refused + ")";
     } else {
       report.validation = validate_as_read(
-          decimated.mesh, rounding_for(options, decimated.mesh).precision);
+          decimated.mesh, precision_of(options, decimated.mesh));
       if (!report.validation.is_printable()) {
         report.decimation_discarded = "failed the check";
       } else if (lost_in_decimation(decimated, kept, options.print.tolerance_mm,
@@ -226,8 +219,7 @@ void decimate_and_check(TriangleMesh& mesh, const PartsKept& kept,
     }
   }
   tell("check", 0.0);
-  report.validation =
-      validate_as_read(mesh, rounding_for(options, mesh).precision);
+  report.validation = validate_as_read(mesh, precision_of(options, mesh));
   report.seconds.check = clock.lap();
   tell("check", 1.0);
 }
@@ -271,7 +263,7 @@ void unite_and_finish(std::vector<Part> parts, const SolidOptions& options,
       cut_underside(mesh, report.placement, options, report);
     }
   } else {
-    mesh = snapped(mesh, rounding_for(options, mesh).precision);
+    mesh = snapped(mesh, precision_of(options, mesh));
   }
   report.seconds.round = clock.lap();
   decimate_and_check(mesh, kept, options, report, clock, tell);
@@ -319,7 +311,7 @@ ColoredMesh one_volume(const Solid& whole, int color) {
 void add_volume(std::vector<ColoredMesh>& volumes, TriangleMesh volume,
                 int color, const SolidOptions& options) {
   const ValidationReport check =
-      validate_as_read(volume, rounding_for(options, volume).precision);
+      validate_as_read(volume, precision_of(options, volume));
   if (!check.is_printable()) {
     throw GeometryError(fmt::format(
         "the volume of colour {}, less the colours below it, is not "
@@ -350,7 +342,9 @@ std::vector<ColoredMesh> flat_color_volumes(const FlatModel& flat,
     if (footprint.rings.empty()) continue;
     const TriangleMesh extruded = extrude(footprint, flat.height_mm);
     TriangleMesh volume =
-        round_and_repair(extruded, rounding_for(options, extruded)).mesh;
+        round_and_repair(extruded,
+                         {.precision = precision_of(options, extruded)})
+            .mesh;
     add_volume(volumes, std::move(volume), material, options);
   }
   return volumes;
@@ -391,7 +385,8 @@ std::vector<ColoredMesh> color_volumes(std::vector<Part> parts,
           fmt::format("the volume of colour {} is not printable: {}", color,
                       fmt::join(scratch.validation.problems(), "; ")));
     }
-    const RoundingOptions rounding = rounding_for(options, whole.mesh);
+    const RoundingOptions rounding{.precision =
+                                       precision_of(options, whole.mesh)};
     TriangleMesh volume =
         filled.triangles.empty()
             ? own
@@ -472,28 +467,21 @@ std::optional<std::string> fills_its_box(const SolidReport& report,
 // 1e308) shrinks the segments below what the tubes can be built from (at
 // a ratio of a million a union lost a part; at 1e200 the tubes are no
 // solids). Such a model is a lump at best: refuse the width at its place.
+// The longest side of what the skeleton draws, tube widths not counted; not
+// above 0 when it draws nothing or a point.
+double drawing_extent(const lsys::Skeleton& skeleton) {
+  const glm::dvec3 size = lsys::bounds(skeleton).size();
+  return std::max({size.x, size.y, size.z});
+}
+
 void refuse_widths_that_dwarf_the_drawing(const lsys::Grammar& grammar,
                                           const lsys::Skeleton& skeleton) {
   constexpr double kMostRatio = 1e4;
-  lsys::Bounds drawing;
   double widest = 0.0;
   for (const lsys::Segment& s : skeleton.segments) {
-    drawing.add(s.p0);
-    drawing.add(s.p1);
     widest = std::max({widest, s.start_diameter, s.end_diameter});
   }
-  for (const lsys::Polygon& polygon : skeleton.polygons) {
-    for (const glm::dvec3& p : polygon.points) drawing.add(p);
-  }
-  for (const lsys::Sphere& s : skeleton.spheres) {
-    drawing.add(s.center);
-    widest = std::max(widest, s.diameter);
-  }
-  for (const lsys::Sheet& sheet : skeleton.sheets) {
-    for (const glm::dvec3& p : sheet.points) drawing.add(p);
-  }
-  const glm::dvec3 size = drawing.size();
-  const double extent = std::max({size.x, size.y, size.z});
+  const double extent = drawing_extent(skeleton);
   if (!(extent > 0.0) || widest <= kMostRatio * extent) return;
   throw lsys::width_error(
       grammar, widest,
@@ -513,19 +501,7 @@ void refuse_a_scale_below_a_micrometre(const lsys::Grammar& grammar,
   constexpr double kFinestMm = 1e-3;
   if (!print.scale_mm_per_unit) return;
   const double mm_per_unit = *print.scale_mm_per_unit;
-  lsys::Bounds drawing;
-  for (const lsys::Segment& s : skeleton.segments) {
-    drawing.add(s.p0);
-    drawing.add(s.p1);
-  }
-  for (const lsys::Polygon& polygon : skeleton.polygons) {
-    for (const glm::dvec3& p : polygon.points) drawing.add(p);
-  }
-  for (const lsys::Sheet& sheet : skeleton.sheets) {
-    for (const glm::dvec3& p : sheet.points) drawing.add(p);
-  }
-  const glm::dvec3 size = drawing.size();
-  const double extent = std::max({size.x, size.y, size.z});
+  const double extent = drawing_extent(skeleton);
   if (!(extent > 0.0) || extent * mm_per_unit >= kFinestMm) return;
   const std::string message = fmt::format(
       "at a scale of {:g} mm per unit the drawing spans {:g} mm, less than "

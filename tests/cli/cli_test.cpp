@@ -278,8 +278,7 @@ TEST_F(Build, WritesFilesThatStayPrintableAsTheirReadersReadThem) {
     return static_cast<double>(std::strtof(text, nullptr));
   };
   for (const char* output : {"tree.3mf", "tree.scad"}) {
-    const auto built =
-        run_command(lsolid() + " tree.ls -q -o " + output, dir_);
+    const auto built = run_command(lsolid() + " tree.ls -q -o " + output, dir_);
     ASSERT_EQ(built.exit_code, 0) << built.err;
   }
   const std::string model =

@@ -25,10 +25,11 @@ TEST(Rounding, MendsSliversThatFloatsCannotHold) {
   const ValidationReport naive =
       validate(snapped(united, {.kind = Precision::Kind::Float}));
   EXPECT_FALSE(naive.is_printable());
-  const auto [repaired, stats, clean] =
+  const auto [repaired, stats, clean, as_floats] =
       round_and_repair(united, {.precision = {.kind = Precision::Kind::Float}});
   expect_printable(repaired);
   EXPECT_TRUE(clean);
+  EXPECT_FALSE(as_floats);
   EXPECT_GT(stats.slivers_removed, 0U);
   for (const glm::dvec3& p : repaired.vertices) {
     volatile float rounded = static_cast<float>(p.x);  // see vertex_key.hpp
@@ -62,10 +63,11 @@ TEST(Rounding, AddsUpWhatLaterRoundingsMended) {
 }
 
 TEST(Rounding, LeavesACleanMeshAsItIs) {
-  const auto [box, stats, clean] =
+  const auto [box, stats, clean, as_floats] =
       round_and_repair(box_mesh({0, 0, 0}, {1, 2, 3}),
                        {.precision = {.kind = Precision::Kind::Float}});
   EXPECT_TRUE(clean);
+  EXPECT_FALSE(as_floats);
   EXPECT_EQ(box.triangles.size(), 12U);
   EXPECT_EQ(stats.passes, 1);
   EXPECT_EQ(stats.slivers_removed, 0U);

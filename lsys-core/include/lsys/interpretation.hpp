@@ -38,9 +38,10 @@ struct InterpretOptions {
 
 /// The error for a width the build cannot meet, with `message`: placed at
 /// the first width module (`!`) whose constant parameter makes a diameter
-/// of at least `width` model units, else at the setting of the initial width when that is at least
-/// `width`, else at the first width module with a computed parameter, else
-/// at the setting of the initial width, else at the axiom.
+/// of at least `width` model units, else at the setting of the initial width
+/// when that is at least `width`, else at the first width module with a
+/// computed parameter, else at the setting of the initial width, else at the
+/// axiom.
 [[nodiscard]] ParseError width_error(const Grammar& grammar, double width,
                                      std::string message);
 

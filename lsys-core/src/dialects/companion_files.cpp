@@ -31,9 +31,7 @@ std::filesystem::path folder_of(const std::string& file) {
 std::filesystem::path canonical_folder(const std::filesystem::path& folder) {
   std::error_code error;
   std::filesystem::path canonical = std::filesystem::canonical(folder, error);
-  if (error || !std::filesystem::is_directory(canonical, error) || error) {
-    return {};
-  }
+  if (error || !std::filesystem::is_directory(canonical, error)) return {};
   return canonical;
 }
 
@@ -72,6 +70,12 @@ std::optional<std::string> CompanionFiles::refusal(
   const std::filesystem::path canonical =
       std::filesystem::canonical(path, error);
   if (error) return "cannot read file: " + error.message();
+  return refusal_of_canonical(canonical);
+}
+
+std::optional<std::string> CompanionFiles::refusal_of_canonical(
+    const std::filesystem::path& canonical) const {
+  std::error_code error;
   if (std::none_of(roots_.begin(), roots_.end(), [&](const auto& root) {
         return is_within(canonical, root);
       })) {
@@ -118,9 +122,10 @@ std::shared_ptr<const SourceFile> CompanionFiles::load(
     std::error_code error;
     const auto link = std::filesystem::symlink_status(candidate, error);
     if (error || !std::filesystem::exists(link)) continue;
-    if (const auto why = refusal(candidate)) fail(*why);
     const std::filesystem::path canonical =
         std::filesystem::canonical(candidate, error);
+    if (error) fail("cannot read file: " + error.message());
+    if (const auto why = refusal_of_canonical(canonical)) fail(*why);
     auto& file = read_[canonical];
     if (!file) file = load_source(candidate);
     named_bytes_ += file->text().size();

@@ -58,6 +58,10 @@ class CompanionFiles {
       const std::filesystem::path& path) const;
 
  private:
+  // As refusal, for a path whose links are resolved already.
+  [[nodiscard]] std::optional<std::string> refusal_of_canonical(
+      const std::filesystem::path& canonical) const;
+
   std::vector<std::filesystem::path> roots_;  // canonical
   std::map<std::filesystem::path, std::shared_ptr<const SourceFile>> read_;
   std::size_t named_bytes_ = 0;

@@ -252,14 +252,15 @@ Functions read_functions(const CpfgView& view, CompanionFiles& companions) {
   std::vector<CpfgFunction> functions;
   std::map<std::string, std::vector<CpfgFunction>> read;
   const auto load = [&](const ViewFileName& file, std::string_view what) {
-    auto& cached = read[file.name];
-    if (cached.empty()) {
+    auto cached = read.find(file.name);
+    if (cached == read.end()) {
       const auto source =
           companions.load(*view.source, file.offset, what, file.name);
       check_text(*source);
-      cached = read_cpfg_functions(*source);
+      cached = read.emplace(file.name, read_cpfg_functions(*source)).first;
     }
-    functions.insert(functions.end(), cached.begin(), cached.end());
+    functions.insert(functions.end(), cached->second.begin(),
+                     cached->second.end());
   };
   if (view.function_set) {
     load(*view.function_set, "function set:");

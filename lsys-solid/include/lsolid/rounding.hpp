@@ -39,6 +39,9 @@ struct Rounded {
   /// The last pass found no intersecting and no degenerate face (the
   /// passes did not run out first).
   bool clean = false;
+  /// round_for rounded a `.scad` to floats, six significant digits being
+  /// more than its faces could be mended at.
+  bool as_floats = false;
 };
 
 /// Adds what a later rounding of the same model mended to `total`: the
@@ -58,6 +61,14 @@ void accumulate(RoundingStats& total, const RoundingStats& later);
 /// @throws GeometryError if it is not a 2-manifold.
 [[nodiscard]] Rounded round_and_repair(const TriangleMesh& mesh,
                                        const RoundingOptions& options = {});
+
+/// round_and_repair at the precision of `format` (precision_for, at the
+/// mesh's reach). A `.scad` whose faces cannot all be mended at six
+/// significant digits (blog tree C left 43 pairs of faces finer than 10⁻⁴
+/// mm) is rounded to floats instead, which OpenSCAD reads exactly too, but
+/// which its STL export may break (Rounded::as_floats).
+/// @throws GeometryError as round_and_repair.
+[[nodiscard]] Rounded round_for(const TriangleMesh& mesh, MeshFormat format);
 
 /// A printable mesh as a file of `format` keeps it (precision_for):
 /// snapped, and mended as round_and_repair mends where snapping breaks it;

@@ -55,13 +55,28 @@ void print_report(const SolidReport& r, bool united) {
         "inside the parts found inside it\n",
         r.flat_outlines, r.flat_rings, r.witnesses_checked);
   } else if (united) {
+    const UnionStats& u = r.union_stats;
     fmt::print(
         "union: {} contacts, {} booleans ({} rounded to doubles), {} joined "
         "without a boolean, {} retried, {} cavities filled; {} points inside "
         "the parts found inside it\n",
-        r.union_stats.contacts, r.union_stats.booleans, r.union_stats.rounded,
-        r.union_stats.concatenations, r.union_stats.retries, r.cavities_filled,
-        r.witnesses_checked);
+        u.contacts, u.booleans, u.rounded, u.concatenations, u.retries,
+        r.cavities_filled, r.witnesses_checked);
+    if (u.engine == UnionEngine::ExactCrossings) {
+      fmt::print(
+          "union engine: exact, {} unions, {} fallbacks to the corefinement; "
+          "{} crossings, {} faces cut; {} predicates on implicit points, {} "
+          "({:.2f}%) evaluated exactly\n",
+          u.exact_unions, u.fallbacks, u.crossings, u.cut_faces, u.predicates,
+          u.filter_failures,
+          u.predicates == 0 ? 0.0
+                            : 100.0 * static_cast<double>(u.filter_failures) /
+                                  static_cast<double>(u.predicates));
+      if (!u.fallback_reason.empty())
+        fmt::print("union engine: fell back: {}\n", u.fallback_reason);
+    } else {
+      fmt::print("union engine: corefine (CGAL's corefinement)\n");
+    }
   }
   if (r.placement.lies_flat && r.placement.cut_refused) {
     fmt::print(
@@ -272,6 +287,9 @@ void run_build(const BuildCommand& command) {
   options.interpretation = interpret_options(command.input);
   options.print = print_settings(grammar, command.print);
   options.unite = !command.no_union;
+  options.union_engine = command.union_engine == "corefine"
+                             ? UnionEngine::Corefinement
+                             : UnionEngine::ExactCrossings;
   options.decimate = !command.no_decimate;
   if (command.max_triangles) {
     // A closed mesh has at least 4 triangles; indices are 32 bits.

@@ -108,6 +108,7 @@ struct BuildCommand {
   std::string output;  ///< empty: FILE with .stl beside the input
   bool ascii = false;
   bool no_union = false;
+  std::string union_engine = "exact";  ///< `--union-engine`
   bool no_decimate = false;
   bool multi_material = false;  ///< one volume per colour (3MF, OBJ)
   std::optional<std::string> max_triangles;  ///< as typed

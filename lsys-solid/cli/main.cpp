@@ -78,6 +78,11 @@ int main(int argc, char** argv) {
   auto* no_union = app.add_flag(
       "--no-union", build.no_union,
       "write the overlapping parts without uniting them (debugging)");
+  app.add_option("--union-engine", build.union_engine,
+                 "the union's engine: exact (lsolid's own, the default) or "
+                 "corefine (CGAL's corefinement, to compare or report a bug)")
+      ->check(CLI::IsMember({"exact", "corefine"}))
+      ->excludes(no_union);
   app.add_flag("--multi-material", build.multi_material,
                "in a .3mf or .obj, one volume per colour, not overlapping, "
                "for a printer with an extruder per colour")

@@ -229,41 +229,82 @@ void decimate_and_check(TriangleMesh& mesh, const PartsKept& kept,
 // coplanar caps made the union three times as slow on ABOP fig. 1.24a, and
 // the union of the caps three times the triangles), decimated where that
 // stays printable, and its check, into `mesh` and `report`.
+// The union of the parts with `engine`, rounded to the file's precision,
+// its cavities filled, and checked to keep the parts (check_union_kept).
+// @throws GeometryError as union_parts and check_union_kept.
+void unite_and_round(std::vector<Part> parts, UnionEngine engine,
+                     const PartsKept& kept, const SolidOptions& options,
+                     SolidReport& report, TriangleMesh& mesh,
+                     Stopwatch& clock, const Progress& tell) {
+  UnionResult united =
+      union_parts(std::move(parts),
+                  {.progress = [&](double done) { tell("union", done); },
+                   .expect =
+                       [&](double seconds) {
+                         if (options.expect) options.expect("union", seconds);
+                       },
+                   .engine = engine});
+  CavitiesFilled filled = fill_cavities(std::move(united.mesh));
+  report.union_stats = united.stats;
+  report.cavities_filled = filled.removed;
+  report.seconds.unite += clock.lap();
+  tell("rounding", 0.0);
+  Rounded rounded = round_for_output(filled.mesh, options, report.warnings);
+  report.rounding = {};
+  accumulate(report.rounding, rounded.stats);
+  filled = fill_cavities(std::move(rounded.mesh));
+  mesh = std::move(filled.mesh);
+  report.cavities_filled += filled.removed;
+  report.witnesses_checked = check_union_kept(mesh, kept);
+}
+
+// The union of the parts, rounded to the file's precision, its underside
+// cut flat if it lies flat (the cut after the union: cut part by part, the
+// coplanar caps made the union three times as slow on ABOP fig. 1.24a, and
+// the union of the caps three times the triangles), decimated where that
+// stays printable, and its check, into `mesh` and `report`. A union by the
+// exact engine that fails its checks is done again by the corefinement
+// (the safety net, docs/design.md), and the report says why.
 void unite_and_finish(std::vector<Part> parts, const SolidOptions& options,
                       SolidReport& report, TriangleMesh& mesh, Stopwatch& clock,
                       const Progress& tell) {
   tell("union", 0.0);
   PartsKept kept;
-  if (options.unite) kept = parts_kept(parts);
-  if (options.unite) {
-    UnionResult united =
-        union_parts(std::move(parts),
-                    {.progress = [&](double done) { tell("union", done); },
-                     .expect =
-                         [&](double seconds) {
-                           if (options.expect) options.expect("union", seconds);
-                         }});
-    CavitiesFilled filled = fill_cavities(std::move(united.mesh));
-    mesh = std::move(filled.mesh);
-    report.union_stats = united.stats;
-    report.cavities_filled = filled.removed;
-  } else {
+  if (!options.unite) {
     for (const Part& part : parts) append(mesh, part.mesh);
+    report.seconds.unite = clock.lap();
+    tell("rounding", 0.0);
+    mesh = snapped(mesh, precision_of(options, mesh));
+    report.seconds.round = clock.lap();
+    decimate_and_check(mesh, kept, options, report, clock, tell);
+    return;
   }
-  report.seconds.unite = clock.lap();
-  tell("rounding", 0.0);
-  if (options.unite) {
-    Rounded rounded = round_for_output(mesh, options, report.warnings);
-    accumulate(report.rounding, rounded.stats);
-    CavitiesFilled filled = fill_cavities(std::move(rounded.mesh));
-    mesh = std::move(filled.mesh);
-    report.cavities_filled += filled.removed;
-    report.witnesses_checked = check_union_kept(mesh, kept);
-    if (report.placement.lies_flat && report.placement.cut_z_mm > 0.0) {
-      cut_underside(mesh, report.placement, options, report);
+  kept = parts_kept(parts);
+  if (options.union_engine == UnionEngine::ExactCrossings) {
+    std::vector<Part> spare = parts;
+    try {
+      unite_and_round(std::move(parts), options.union_engine, kept, options,
+                      report, mesh, clock, tell);
+    } catch (const GeometryError& e) {
+      const std::size_t fallbacks = report.union_stats.fallbacks;
+      const std::string reason =
+          std::string("the exact engine's union failed its check: ") +
+          e.what();
+      mesh = {};
+      unite_and_round(std::move(spare), UnionEngine::Corefinement, kept,
+                      options, report, mesh, clock, tell);
+      report.union_stats.engine = UnionEngine::ExactCrossings;
+      report.union_stats.fallbacks += fallbacks + 1;
+      report.union_stats.fallback_reason = reason;
+      report.warnings.push_back(reason + "; united again by CGAL's "
+                                         "corefinement");
     }
   } else {
-    mesh = snapped(mesh, precision_of(options, mesh));
+    unite_and_round(std::move(parts), options.union_engine, kept, options,
+                    report, mesh, clock, tell);
+  }
+  if (report.placement.lies_flat && report.placement.cut_z_mm > 0.0) {
+    cut_underside(mesh, report.placement, options, report);
   }
   report.seconds.round = clock.lap();
   decimate_and_check(mesh, kept, options, report, clock, tell);

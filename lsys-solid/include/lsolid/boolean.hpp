@@ -3,12 +3,30 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "lsolid/mesh.hpp"
 
 namespace lsolid {
+
+/// Which union engine unites the parts.
+enum class UnionEngine {
+  /// lsolid's own: each edge–face crossing decided once, exactly, on the
+  /// input coordinates, new points kept implicit until rounded
+  /// (docs/design.md, "The exact union engine"); a union it cannot do is
+  /// done by the corefinement, and counted (UnionStats::fallbacks).
+  ExactCrossings,
+  /// CGAL's corefinement over exact constructions (Epeck): the engine the
+  /// exact one is checked against.
+  Corefinement,
+};
+
+/// The engine's name as the command line and the report write it:
+/// "exact" or "corefine".
+[[nodiscard]] const char* engine_name(UnionEngine engine);
 
 /// What the union did.
 struct UnionStats {
@@ -27,6 +45,21 @@ struct UnionStats {
   /// meets the part's, counted once per such pair of parts: where the
   /// corefinement has work to do, and what its time follows.
   std::size_t contacts = 0;
+  UnionEngine engine = UnionEngine::ExactCrossings;  ///< the engine asked for
+  /// Unions the exact engine computed (the rest of `booleans` were
+  /// corefinements).
+  std::size_t exact_unions = 0;
+  /// Unions the exact engine gave back to the corefinement, and the first
+  /// reason it gave.
+  std::size_t fallbacks = 0;
+  std::string fallback_reason;
+  std::size_t crossings = 0;  ///< edge–face crossings the engine decided
+  std::size_t cut_faces = 0;  ///< faces it triangulated again
+  /// Predicates on implicit points, and those the interval filter could not
+  /// decide (evaluated exactly): a rate above about 1% means a question
+  /// whose answer is known is being asked.
+  std::uint64_t predicates = 0;
+  std::uint64_t filter_failures = 0;
 };
 
 /// The union's time per contact (UnionStats::contacts) on the project's
@@ -50,6 +83,7 @@ struct UnionOptions {
   /// the union is expected to take: its contacts times
   /// kUnionSecondsPerContact.
   std::function<void(double seconds)> expect;
+  UnionEngine engine = UnionEngine::ExactCrossings;
 };
 
 /// Unions closed parts into one closed 2-manifold mesh with CGAL's

@@ -31,6 +31,9 @@ struct SolidOptions {
   PrintSettings print;
   /// False writes the overlapping parts without a union (`--no-union`).
   bool unite = true;
+  /// The union's engine (`--union-engine`); the exact one falls back to the
+  /// corefinement where it cannot finish, or its result fails a check.
+  UnionEngine union_engine = UnionEngine::ExactCrossings;
   /// The format the mesh is for: its coordinates are snapped to what that
   /// format keeps (precision_for) before the last check.
   MeshFormat format = MeshFormat::StlBinary;

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <glm/common.hpp>
 #include <set>
 #include <string>
@@ -33,6 +34,7 @@
 #include "golden.hpp"
 #include "lsolid/errors.hpp"
 #include "lsolid/rounding.hpp"
+#include "union/exact_union.hpp"
 
 namespace lsolid {
 namespace {
@@ -54,10 +56,34 @@ CGAL::Bbox_3 box_of(const Box& b) {
           b.max.x + kMargin, b.max.y + kMargin, b.max.z + kMargin};
 }
 
+// Some parts united. With the exact engine a group holds double
+// coordinates (`plain`); with the corefinement, and after a corefinement
+// whose new points could not be rounded, exact points (`exact`).
 struct Group {
-  ExactMesh mesh;
+  TriangleMesh plain;
+  std::optional<ExactMesh> exact;
   CGAL::Bbox_3 box;
   std::vector<std::size_t> parts;
+
+  std::size_t faces() const {
+    return exact ? exact->number_of_faces() : plain.triangles.size();
+  }
+  ExactMesh& exact_mesh() {
+    if (!exact) {
+      exact = surface_mesh_or_throw<ExactMesh>(plain, "unite");
+      plain = {};
+    }
+    return *exact;
+  }
+  void join(Group& other) {
+    if (!exact && !other.exact) {
+      append(plain, other.plain);
+    } else {
+      exact_mesh().join(other.exact_mesh());
+    }
+    box += other.box;
+    parts.insert(parts.end(), other.parts.begin(), other.parts.end());
+  }
 };
 
 // Interleaves the bits of three 10-bit coordinates (a Morton code).
@@ -79,6 +105,31 @@ std::uint32_t morton(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
 // tested with exact predicates on the rounded coordinates), they are
 // rounded, and the next union starts from doubles again. Where it would not,
 // the exact points stay. Returns true if the points were rounded.
+// Whether a mesh whose new points were just rounded is still a closed
+// 2-manifold without degenerate or intersecting faces near them (`near_new`:
+// the faces that touch a new point); only faces whose boxes meet those can
+// have changed.
+bool valid_near(const InexactMesh& rounded,
+                const std::vector<InexactMesh::Face_index>& near_new) {
+  using Face = InexactMesh::Face_index;
+  for (const Face f : near_new)
+    if (PMP::is_degenerate_triangle_face(f, rounded)) return false;
+  using FaceBox = CGAL::Box_intersection_d::Box_with_info_d<double, 3, Face>;
+  std::vector<FaceBox> changed_boxes;
+  std::vector<FaceBox> all_boxes;
+  for (const Face f : near_new)
+    changed_boxes.emplace_back(PMP::face_bbox(f, rounded), f);
+  for (const Face f : rounded.faces())
+    all_boxes.emplace_back(PMP::face_bbox(f, rounded), f);
+  std::set<Face> range(near_new.begin(), near_new.end());
+  CGAL::box_intersection_d(changed_boxes.begin(), changed_boxes.end(),
+                           all_boxes.begin(), all_boxes.end(),
+                           [&](const FaceBox&, const FaceBox& other) {
+                             range.insert(other.info());
+                           });
+  return !PMP::does_self_intersect(range, rounded);
+}
+
 bool round_new_points(ExactMesh& mesh) {
   using Face = InexactMesh::Face_index;
   std::vector<bool> is_new(mesh.number_of_vertices(), false);
@@ -111,26 +162,9 @@ bool round_new_points(ExactMesh& mesh) {
     }
     const Face g = rounded.add_face(corners[0], corners[1], corners[2]);
     if (g == InexactMesh::null_face()) return false;
-    if (touches_new) {
-      if (PMP::is_degenerate_triangle_face(g, rounded)) return false;
-      near_new.push_back(g);
-    }
+    if (touches_new) near_new.push_back(g);
   }
-  // Faces whose boxes meet a changed face: the only ones it can now cut.
-  using FaceBox = CGAL::Box_intersection_d::Box_with_info_d<double, 3, Face>;
-  std::vector<FaceBox> changed_boxes;
-  std::vector<FaceBox> all_boxes;
-  for (const Face f : near_new)
-    changed_boxes.emplace_back(PMP::face_bbox(f, rounded), f);
-  for (const Face f : rounded.faces())
-    all_boxes.emplace_back(PMP::face_bbox(f, rounded), f);
-  std::set<Face> range(near_new.begin(), near_new.end());
-  CGAL::box_intersection_d(changed_boxes.begin(), changed_boxes.end(),
-                           all_boxes.begin(), all_boxes.end(),
-                           [&](const FaceBox&, const FaceBox& other) {
-                             range.insert(other.info());
-                           });
-  if (PMP::does_self_intersect(range, rounded)) return false;
+  if (!valid_near(rounded, near_new)) return false;
   for (const auto v : mesh.vertices()) {
     if (!is_new[static_cast<std::size_t>(v)]) continue;
     const Inexact::Point_3& p =
@@ -140,33 +174,56 @@ bool round_new_points(ExactMesh& mesh) {
   return true;
 }
 
+// The exact engine's union, its new points (from `first_new` on) rounded:
+// kept if it is a closed 2-manifold whose faces near the new points are
+// neither degenerate nor intersecting.
+bool rounded_union_is_valid(const TriangleMesh& mesh, std::size_t first_new) {
+  const std::optional<InexactMesh> sm = to_surface_mesh<InexactMesh>(mesh);
+  if (!sm || sm->number_of_faces() == 0 || !CGAL::is_closed(*sm) ||
+      !CGAL::is_valid_polygon_mesh(*sm)) {
+    return false;
+  }
+  std::vector<InexactMesh::Face_index> near_new;
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const auto& t = mesh.triangles[f];
+    if (t[0] >= first_new || t[1] >= first_new || t[2] >= first_new)
+      near_new.emplace_back(static_cast<std::uint32_t>(f));
+  }
+  return valid_near(*sm, near_new);
+}
+
 // Where some new points had to stay exact, the whole union is rounded to
 // doubles and mended as the final mesh is (round_and_repair: slivers
 // collapsed or flipped, intersecting faces rebuilt), so that the next union
 // starts from doubles and no rational grows across unions; dense models
 // (ABOP fig. 1.24b) spent most of their time in GMP otherwise. Kept only
 // if the result is a closed, self-intersection-free surface.
-bool round_and_mend(ExactMesh& mesh) {
-  const TriangleMesh rounded = to_triangle_mesh(mesh);
-  const TriangleMesh mended =
+std::optional<TriangleMesh> mended(const TriangleMesh& rounded) {
+  TriangleMesh out =
       round_and_repair(rounded,
                        {.precision = {.kind = Precision::Kind::Double}})
           .mesh;
-  const std::optional<InexactMesh> check = to_surface_mesh<InexactMesh>(mended);
+  const std::optional<InexactMesh> check = to_surface_mesh<InexactMesh>(out);
   if (!check || check->number_of_faces() == 0 || !CGAL::is_closed(*check) ||
       !CGAL::is_valid_polygon_mesh(*check) ||
       PMP::does_self_intersect(*check)) {
-    return false;
+    return std::nullopt;
   }
   // Rebuilding intersecting faces can delete whole thin pieces (leaf plates
   // that met face on face lost four fifths of their volume here): a mend
   // that changes the volume more than rounding can is refused.
   const double before = signed_volume(rounded);
-  if (std::fabs(signed_volume(mended) - before) >
+  if (std::fabs(signed_volume(out) - before) >
       kMendVolumeSlack * std::fabs(before)) {
-    return false;
+    return std::nullopt;
   }
-  mesh = surface_mesh_or_throw<ExactMesh>(mended, "unite");
+  return out;
+}
+
+bool round_and_mend(ExactMesh& mesh) {
+  const std::optional<TriangleMesh> out = mended(to_triangle_mesh(mesh));
+  if (!out) return false;
+  mesh = surface_mesh_or_throw<ExactMesh>(*out, "unite");
   return true;
 }
 
@@ -176,8 +233,12 @@ void translate(ExactMesh& mesh, const Exact::Vector_3& by) {
 
 class Unioner {
  public:
-  Unioner(std::vector<Part> parts, std::function<void(double)> progress)
-      : parts_(std::move(parts)), progress_(std::move(progress)) {}
+  Unioner(std::vector<Part> parts, std::function<void(double)> progress,
+          UnionEngine engine)
+      : parts_(std::move(parts)), progress_(std::move(progress)),
+        engine_(engine) {
+    stats_.engine = engine;
+  }
 
   UnionResult run(const std::function<void(double)>& expect) {
     if (parts_.empty())
@@ -187,9 +248,12 @@ class Unioner {
       expect(static_cast<double>(stats_.contacts) * kUnionSecondsPerContact);
     }
     const Group all = reduce(std::move(groups), true);
+    stats_.predicates = filters_.orient_2d + filters_.along_edge;
+    stats_.filter_failures =
+        filters_.orient_2d_exact + filters_.along_edge_exact;
     UnionResult result;
     result.stats = stats_;
-    result.mesh = to_triangle_mesh(all.mesh);
+    result.mesh = all.exact ? to_triangle_mesh(*all.exact) : all.plain;
     if (progress_) progress_(1.0);
     return result;
   }
@@ -244,15 +308,11 @@ class Unioner {
       const auto free = static_cast<std::size_t>(
           std::find(taken.begin(), taken.end(), false) - taken.begin());
       layer[i] = static_cast<int>(free);
-      ExactMesh mesh =
-          surface_mesh_or_throw<ExactMesh>(parts_[i].mesh, "unite");
+      Group part = single(i, boxes[i]);
       if (free == groups.size()) {
-        groups.push_back(Group{std::move(mesh), boxes[i], {i}});
+        groups.push_back(std::move(part));
       } else {
-        Group& g = groups[free];
-        g.mesh.join(mesh);
-        g.box += boxes[i];
-        g.parts.push_back(i);
+        groups[free].join(part);
         ++stats_.concatenations;
       }
     }
@@ -293,17 +353,84 @@ class Unioner {
     }
   }
 
+  // A part as a group of its own, in the engine's representation.
+  Group single(std::size_t i, const CGAL::Bbox_3& box) const {
+    Group g{{}, std::nullopt, box, {i}};
+    if (engine_ == UnionEngine::Corefinement) {
+      g.exact = surface_mesh_or_throw<ExactMesh>(parts_[i].mesh, "unite");
+    } else {
+      g.plain = parts_[i].mesh;
+    }
+    return g;
+  }
+
+  // The exact engine's union of two groups of double coordinates, retried
+  // with one operand shifted where it meets a degeneracy; nothing if it
+  // could not, and the reason in last_failure_. Intermediate results
+  // (`round_points`) must stay valid once rounded: else they are mended as
+  // the corefinement's are, or given back.
+  std::optional<TriangleMesh> exact_union(const Group& a, const Group& b,
+                                          bool round_points) {
+    for (int attempt = 0; attempt < kAttempts; ++attempt) {
+      const TriangleMesh* second = &b.plain;
+      TriangleMesh shifted;
+      if (attempt > 0) {
+        const double d = kPerturbationMm * attempt;
+        shifted = b.plain;
+        for (glm::dvec3& p : shifted.vertices)
+          p += glm::dvec3(d * kShift[0], d * kShift[1], d * kShift[2]);
+        second = &shifted;
+        ++stats_.retries;
+      }
+      exact_union::PairUnion u = exact_union::unite_pair(a.plain, *second,
+                                                        filters_);
+      stats_.crossings += u.counters.crossings;
+      stats_.cut_faces += u.counters.cut_faces;
+      if (!u.failure.empty()) {
+        last_failure_ = u.failure;
+        if (u.degenerate) continue;
+        return std::nullopt;
+      }
+      if (!round_points) return std::move(u.mesh);
+      if (rounded_union_is_valid(u.mesh, u.first_new)) {
+        ++stats_.rounded;
+        return std::move(u.mesh);
+      }
+      if (std::optional<TriangleMesh> m = mended(u.mesh)) {
+        ++stats_.rounded;
+        return m;
+      }
+      last_failure_ = "its new points could not be rounded to doubles";
+      return std::nullopt;
+    }
+    return std::nullopt;
+  }
+
   Group merge(Group a, Group b, bool round_points) {
     if (!CGAL::do_overlap(a.box, b.box)) {
-      a.mesh.join(b.mesh);
-      a.box += b.box;
-      a.parts.insert(a.parts.end(), b.parts.begin(), b.parts.end());
+      a.join(b);
       ++stats_.concatenations;
       return a;
     }
+    if (engine_ == UnionEngine::ExactCrossings && !a.exact && !b.exact) {
+      if (std::optional<TriangleMesh> u = exact_union(a, b, round_points)) {
+        ++stats_.booleans;
+        ++stats_.exact_unions;
+        a.plain = std::move(*u);
+        a.box += b.box;
+        a.parts.insert(a.parts.end(), b.parts.begin(), b.parts.end());
+        return a;
+      }
+      ++stats_.fallbacks;
+      if (stats_.fallback_reason.empty()) {
+        stats_.fallback_reason =
+            "the union of " + describe(a) + " with " + describe(b) + ": " +
+            last_failure_;
+      }
+    }
     for (int attempt = 0; attempt < kAttempts; ++attempt) {
-      ExactMesh first = a.mesh;
-      ExactMesh second = b.mesh;
+      ExactMesh first = a.exact_mesh();
+      ExactMesh second = b.exact_mesh();
       if (attempt > 0) {
         // A tiny deterministic shift of one operand removes the coincidences
         // (shared vertices, partly shared edges) that corefinement refuses.
@@ -335,7 +462,7 @@ class Unioner {
         }
       }
       ++stats_.booleans;
-      a.mesh = std::move(out);
+      a.exact = std::move(out);
       a.box += b.box;
       a.parts.insert(a.parts.end(), b.parts.begin(), b.parts.end());
       return a;
@@ -364,12 +491,8 @@ class Unioner {
   // The union of some parts, each its own operand.
   Group unite(const std::vector<std::size_t>& ids) {
     std::vector<Group> groups;
-    for (const std::size_t i : ids) {
-      groups.push_back(
-          Group{surface_mesh_or_throw<ExactMesh>(parts_[i].mesh, "unite"),
-                box_of(bounds(parts_[i].mesh)),
-                {i}});
-    }
+    for (const std::size_t i : ids)
+      groups.push_back(single(i, box_of(bounds(parts_[i].mesh))));
     return reduce(std::move(groups), false);
   }
 
@@ -380,7 +503,7 @@ class Unioner {
   // round_and_repair, which rounds the whole mesh.
   Group reduce(std::vector<Group> groups, bool is_final) {
     const auto larger = [](const Group& a, const Group& b) {
-      return a.mesh.number_of_faces() > b.mesh.number_of_faces();
+      return a.faces() > b.faces();
     };
     std::make_heap(groups.begin(), groups.end(), larger);
     const bool tell = is_final && progress_;
@@ -393,8 +516,7 @@ class Unioner {
       std::pop_heap(groups.begin(), groups.end(), larger);
       Group b = std::move(groups.back());
       const bool last = is_final && groups.size() == 1;
-      done += static_cast<double>(a.mesh.number_of_faces() +
-                                  b.mesh.number_of_faces());
+      done += static_cast<double>(a.faces() + b.faces());
       groups.back() = merge(std::move(a), std::move(b), !last);
       if (tell && !last) progress_(std::min(done / total, 0.99));
       std::push_heap(groups.begin(), groups.end(), larger);
@@ -408,7 +530,7 @@ class Unioner {
   static double expected_work(const std::vector<Group>& groups) {
     std::vector<double> sizes;
     for (const Group& g : groups)
-      sizes.push_back(static_cast<double>(g.mesh.number_of_faces()));
+      sizes.push_back(static_cast<double>(g.faces()));
     const auto more = std::greater<>();
     std::make_heap(sizes.begin(), sizes.end(), more);
     double total = 0.0;
@@ -439,14 +561,21 @@ class Unioner {
 
   std::vector<Part> parts_;
   std::function<void(double)> progress_;
+  UnionEngine engine_;
   UnionStats stats_;
+  exact_union::FilterCounters filters_;
   std::string last_failure_;  // what CGAL said, if it threw
 };
 
 }  // namespace
 
+const char* engine_name(UnionEngine engine) {
+  return engine == UnionEngine::ExactCrossings ? "exact" : "corefine";
+}
+
 UnionResult union_parts(std::vector<Part> parts, const UnionOptions& options) {
-  return Unioner(std::move(parts), options.progress).run(options.expect);
+  return Unioner(std::move(parts), options.progress, options.engine)
+      .run(options.expect);
 }
 
 TriangleMesh subtract(const TriangleMesh& a, const TriangleMesh& b) {

@@ -1,0 +1,855 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+//
+// The union of two closed meshes after Manifold's structure (J. M. Smith,
+// "Robust geometric methods for surface modelling and manufacturing",
+// Cambridge TR-766, 2009): every crossing of an edge of one operand with a
+// face of the other is decided once, on input coordinates, and everything
+// else is derived from those decisions. Unlike Manifold the decisions are
+// exact (CGAL's filtered predicates on doubles), and unlike CGAL's
+// corefinement no intersection point is ever constructed as a rational: it
+// stays an implicit point (Attene 2020) whose predicates run in intervals,
+// then in Mpzf. Points on one edge are ordered by their parameter and
+// inserted into the cut face's triangulation where they are known to lie,
+// so that no orientation test whose answer is known (collinear: exactly
+// zero, which no filter can certify) is asked (docs/design.md, "The exact
+// union engine").
+#include "union/exact_union.hpp"
+
+#include <CGAL/Constrained_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/box_intersection_d.h>
+#include <CGAL/intersections.h>
+#include <mpfr.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <memory>
+#include <optional>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "union/implicit_point.hpp"
+#include "union_find.hpp"
+
+namespace lsolid::exact_union {
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point3 = K::Point_3;
+using Interval = CGAL::Interval_nt<false>;
+using Sign = CGAL::Sign;
+
+Point3 point3(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+
+// A degeneracy or a broken invariant: the union gives up, and the caller
+// shifts an operand or falls back to the corefinement.
+struct Failure {
+  std::string what;
+  bool degenerate = false;
+};
+
+// An edge of one operand crossing a face of the other, in its canonical
+// form: the edge's ends in increasing order.
+struct Crossing {
+  std::uint32_t mesh = 0;  // the edge's operand, 0 or 1
+  std::uint32_t e0 = 0;
+  std::uint32_t e1 = 0;
+  std::uint32_t face = 0;  // in the other operand
+  bool p_below = false;    // e0 lies on the face's negative side
+
+  auto key() const { return std::tuple(mesh, e0, e1, face); }
+  bool operator<(const Crossing& o) const { return key() < o.key(); }
+  bool operator==(const Crossing& o) const { return key() == o.key(); }
+};
+
+// Where the faces a (of operand 0) and b (of operand 1) cross: from the
+// crossing `from` to `to` along na × nb, which leaves the inside of operand
+// 1 on its left in face a, and the outside of operand 0 on its left in b.
+struct Segment {
+  std::uint32_t face_a = 0;
+  std::uint32_t face_b = 0;
+  Crossing from;
+  Crossing to;
+};
+
+struct Operand {
+  const TriangleMesh* mesh;
+  std::uint32_t offset;  // of its vertices among all points
+};
+
+Sign orient(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
+            const glm::dvec3& d) {
+  return CGAL::orientation(point3(a), point3(b), point3(c), point3(d));
+}
+
+// The segment of faces fa and fb, if they cross; nothing if they do not.
+// @throws Failure on a degeneracy.
+std::optional<Segment> cross_faces(const std::array<Operand, 2>& ops,
+                                   std::uint32_t fa, std::uint32_t fb) {
+  const std::array<std::uint32_t, 2> face{fa, fb};
+  std::array<std::array<glm::dvec3, 3>, 2> corner;
+  std::array<std::array<std::uint32_t, 3>, 2> index;
+  for (int m = 0; m < 2; ++m) {
+    index[m] = ops[m].mesh->triangles[face[m]];
+    for (int i = 0; i < 3; ++i)
+      corner[m][i] = ops[m].mesh->vertices[index[m][i]];
+  }
+  // side[m][i]: corner i of face m against the plane of the other face.
+  std::array<std::array<Sign, 3>, 2> side;
+  std::array<bool, 2> straddles{};
+  bool zero = false;
+  for (int m = 0; m < 2; ++m) {
+    const auto& plane = corner[1 - m];
+    bool pos = false;
+    bool neg = false;
+    for (int i = 0; i < 3; ++i) {
+      side[m][i] = orient(plane[0], plane[1], plane[2], corner[m][i]);
+      pos = pos || side[m][i] == CGAL::POSITIVE;
+      neg = neg || side[m][i] == CGAL::NEGATIVE;
+      zero = zero || side[m][i] == CGAL::ZERO;
+    }
+    if (!zero && (!pos || !neg)) return std::nullopt;
+    straddles[m] = pos && neg;
+  }
+  if (zero) {
+    if (!straddles[0] || !straddles[1]) {
+      const K::Triangle_3 ta(point3(corner[0][0]), point3(corner[0][1]),
+                             point3(corner[0][2]));
+      const K::Triangle_3 tb(point3(corner[1][0]), point3(corner[1][1]),
+                             point3(corner[1][2]));
+      if (!CGAL::do_intersect(ta, tb)) return std::nullopt;
+      throw Failure{"faces touch", true};
+    }
+    throw Failure{"a vertex lies on a face's plane", true};
+  }
+  std::array<Crossing, 2> ends;
+  std::array<bool, 2> is_forward{};
+  int found = 0;
+  for (int m = 0; m < 2; ++m) {
+    const auto& plane = corner[1 - m];
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3;
+      if (side[m][i] == side[m][j]) continue;
+      const glm::dvec3& u = corner[m][i];
+      const glm::dvec3& v = corner[m][j];
+      const Sign s0 = orient(u, v, plane[0], plane[1]);
+      const Sign s1 = orient(u, v, plane[1], plane[2]);
+      const Sign s2 = orient(u, v, plane[2], plane[0]);
+      const bool any_pos = s0 == CGAL::POSITIVE || s1 == CGAL::POSITIVE ||
+                           s2 == CGAL::POSITIVE;
+      const bool any_neg = s0 == CGAL::NEGATIVE || s1 == CGAL::NEGATIVE ||
+                           s2 == CGAL::NEGATIVE;
+      if (any_pos && any_neg) continue;
+      if (s0 == CGAL::ZERO || s1 == CGAL::ZERO || s2 == CGAL::ZERO)
+        throw Failure{"an edge passes through an edge", true};
+      if (found == 2) throw Failure{"faces cross in more than two points"};
+      Crossing& c = ends[found];
+      c.mesh = static_cast<std::uint32_t>(m);
+      const bool ascending = index[m][i] < index[m][j];
+      c.e0 = ascending ? index[m][i] : index[m][j];
+      c.e1 = ascending ? index[m][j] : index[m][i];
+      c.face = face[1 - m];
+      c.p_below = (ascending ? side[m][i] : side[m][j]) == CGAL::NEGATIVE;
+      // Walking the face's boundary counter-clockwise, the crossing at the
+      // segment's forward end goes from above to below the other face in
+      // face a, and from below to above in face b.
+      is_forward[found] = m == 0 ? side[m][i] == CGAL::POSITIVE
+                                 : side[m][i] == CGAL::NEGATIVE;
+      ++found;
+    }
+  }
+  if (found == 0) return std::nullopt;
+  if (found != 2 || is_forward[0] == is_forward[1])
+    throw Failure{"faces cross in one point"};
+  Segment s{fa, fb, ends[0], ends[1]};
+  if (is_forward[0]) std::swap(s.from, s.to);
+  return s;
+}
+
+// The triangulation of a cut face, in the projection along its normal's
+// largest coordinate, with the face's points as indices into a table.
+struct FacePoint {
+  const ImplicitPoint* def = nullptr;
+  std::uint32_t id = 0;
+  Homogeneous<Interval> approx;
+};
+
+struct Projection {
+  glm::dvec3 origin{};
+  int ax = 0;
+  int ay = 1;
+  mutable std::uint64_t orient_calls = 0;
+  mutable std::uint64_t orient_exact = 0;
+};
+
+template <typename NT>
+NT det3(const Homogeneous<NT>& a, const Homogeneous<NT>& b,
+        const Homogeneous<NT>& c, int ax, int ay) {
+  const NT& xa = a.xyz[ax];
+  const NT& ya = a.xyz[ay];
+  const NT& xb = b.xyz[ax];
+  const NT& yb = b.xyz[ay];
+  const NT& xc = c.xyz[ax];
+  const NT& yc = c.xyz[ay];
+  return xa * (yb * c.w - b.w * yc) - ya * (xb * c.w - b.w * xc) +
+         a.w * (xb * yc - yb * xc);
+}
+
+template <typename NT>
+NT cross_coordinate(const Homogeneous<NT>& a, const Homogeneous<NT>& b,
+                    int axis) {
+  return a.xyz[axis] * b.w - b.xyz[axis] * a.w;
+}
+
+Sign sign_of(const CGAL::Mpzf& x) { return CGAL::sign(x); }
+
+struct Traits {
+  struct Point_2 {
+    const FacePoint* p = nullptr;
+  };
+  struct Segment_2 {
+    Point_2 a;
+    Point_2 b;
+  };
+  struct Triangle_2 {
+    Point_2 a;
+    Point_2 b;
+    Point_2 c;
+  };
+  using Line_2 = Segment_2;
+
+  struct Orientation_2 {
+    const Projection* proj;
+    CGAL::Orientation operator()(const Point_2& a, const Point_2& b,
+                                 const Point_2& c) const {
+      ++proj->orient_calls;
+      {
+        CGAL::Protect_FPU_rounding<true> guard;
+        const CGAL::Uncertain<Sign> s = CGAL::sign(det3(
+            a.p->approx, b.p->approx, c.p->approx, proj->ax, proj->ay));
+        if (s.is_certain()) return s.make_certain();
+      }
+      ++proj->orient_exact;
+      using Exact = Homogeneous<CGAL::Mpzf>;
+      const Exact ea = homogeneous<CGAL::Mpzf>(*a.p->def, proj->origin);
+      const Exact eb = homogeneous<CGAL::Mpzf>(*b.p->def, proj->origin);
+      const Exact ec = homogeneous<CGAL::Mpzf>(*c.p->def, proj->origin);
+      return sign_of(det3(ea, eb, ec, proj->ax, proj->ay));
+    }
+  };
+  // Compares the projected coordinate `axis` of two points.
+  struct Compare_axis {
+    const Projection* proj;
+    int which;  // 0: x, 1: y
+    CGAL::Comparison_result operator()(const Point_2& a,
+                                       const Point_2& b) const {
+      const int axis = which == 0 ? proj->ax : proj->ay;
+      {
+        CGAL::Protect_FPU_rounding<true> guard;
+        const CGAL::Uncertain<Sign> s =
+            CGAL::sign(cross_coordinate(a.p->approx, b.p->approx, axis));
+        if (s.is_certain()) return s.make_certain();
+      }
+      const auto ea = homogeneous<CGAL::Mpzf>(*a.p->def, proj->origin);
+      const auto eb = homogeneous<CGAL::Mpzf>(*b.p->def, proj->origin);
+      return sign_of(cross_coordinate(ea, eb, axis));
+    }
+  };
+  using Compare_x_2 = Compare_axis;
+  using Compare_y_2 = Compare_axis;
+  struct Less_axis {
+    Compare_axis compare;
+    bool operator()(const Point_2& a, const Point_2& b) const {
+      return compare(a, b) == CGAL::SMALLER;
+    }
+  };
+  using Less_x_2 = Less_axis;
+  using Less_y_2 = Less_axis;
+  struct Construct_segment_2 {
+    Segment_2 operator()(const Point_2& a, const Point_2& b) const {
+      return {a, b};
+    }
+  };
+  struct Construct_triangle_2 {
+    Triangle_2 operator()(const Point_2& a, const Point_2& b,
+                          const Point_2& c) const {
+      return {a, b, c};
+    }
+  };
+  // A constrained triangulation asks none of these, but its base class
+  // names them.
+  struct Side_of_oriented_circle_2 {};
+  struct Construct_circumcenter_2 {};
+  struct Compute_squared_distance_2 {};
+  struct Construct_point_2 {
+    const Point_2& operator()(const Point_2& p) const { return p; }
+  };
+
+  explicit Traits(const Projection* proj = nullptr) : proj_(proj) {}
+  Orientation_2 orientation_2_object() const { return {proj_}; }
+  Compare_x_2 compare_x_2_object() const { return {proj_, 0}; }
+  Compare_y_2 compare_y_2_object() const { return {proj_, 1}; }
+  Less_x_2 less_x_2_object() const { return {{proj_, 0}}; }
+  Less_y_2 less_y_2_object() const { return {{proj_, 1}}; }
+  Construct_segment_2 construct_segment_2_object() const { return {}; }
+  Construct_triangle_2 construct_triangle_2_object() const { return {}; }
+  Construct_point_2 construct_point_2_object() const { return {}; }
+
+ private:
+  const Projection* proj_;
+};
+
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, Traits>;
+using Fb = CGAL::Triangulation_face_base_with_info_2<
+    int, Traits, CGAL::Constrained_triangulation_face_base_2<Traits>>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using Triangulation =
+    CGAL::Constrained_triangulation_2<Traits, Tds,
+                                      CGAL::No_constraint_intersection_tag>;
+
+// What a cut face keeps, and what it tells its uncut neighbours.
+struct CutFaceResult {
+  std::vector<std::array<std::uint32_t, 3>> kept;
+  // For each corner edge that no crossing cuts: whether the piece along it
+  // lies inside the other operand (-1: the edge is cut).
+  std::array<int, 3> edge_inside{-1, -1, -1};
+  std::uint64_t orient_calls = 0;
+  std::uint64_t orient_exact = 0;
+};
+
+struct CutFace {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> segments;  // ids
+  std::vector<std::uint32_t> interior;                            // ids
+};
+
+class Engine {
+ public:
+  Engine(const TriangleMesh& a, const TriangleMesh& b, FilterCounters& filters)
+      : ops_{{{&a, 0}, {&b, static_cast<std::uint32_t>(a.vertices.size())}}},
+        filters_(filters) {}
+
+  PairUnion run() {
+    PairUnion result;
+    try {
+      find_segments();
+      number_crossings();
+      std::array<std::vector<std::uint8_t>, 2> inside;
+      std::array<std::vector<std::array<std::uint32_t, 3>>, 2> kept;
+      for (int m = 0; m < 2; ++m) classify(m, inside[m], kept[m]);
+      result.mesh = assemble(kept, result.first_new);
+    } catch (const Failure& f) {
+      result.failure = f.what;
+      result.degenerate = f.degenerate;
+    } catch (const CGAL::Failure_exception& e) {
+      // A constraint crossing another one: two faces of one operand meet
+      // the other's face in segments that cross, which a valid operand
+      // cannot do unless something touches.
+      result.failure = std::string("the triangulation of a cut face: ") +
+                       e.what();
+      result.degenerate = true;
+    }
+    result.counters = counters_;
+    return result;
+  }
+
+ private:
+  using FaceBox =
+      CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::uint32_t>;
+
+  static CGAL::Bbox_3 box_of(const TriangleMesh& m,
+                             const std::array<std::uint32_t, 3>& t) {
+    CGAL::Bbox_3 b;
+    for (const std::uint32_t v : t) b += point3(m.vertices[v]).bbox();
+    return b;
+  }
+
+  static CGAL::Bbox_3 box_of(const TriangleMesh& m) {
+    CGAL::Bbox_3 b;
+    for (const glm::dvec3& v : m.vertices) b += point3(v).bbox();
+    return b;
+  }
+
+  void find_segments() {
+    for (int m = 0; m < 2; ++m) mesh_box_[m] = box_of(*ops_[m].mesh);
+    std::array<std::vector<FaceBox>, 2> boxes;
+    for (int m = 0; m < 2; ++m) {
+      const TriangleMesh& mesh = *ops_[m].mesh;
+      face_box_overlaps_[m].assign(mesh.triangles.size(), 0);
+      for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f) {
+        const CGAL::Bbox_3 b = box_of(mesh, mesh.triangles[f]);
+        if (!CGAL::do_overlap(b, mesh_box_[1 - m])) continue;
+        face_box_overlaps_[m][f] = 1;
+        boxes[m].emplace_back(b, f);
+      }
+    }
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    CGAL::box_intersection_d(
+        boxes[0].begin(), boxes[0].end(), boxes[1].begin(), boxes[1].end(),
+        [&](const FaceBox& x, const FaceBox& y) {
+          pairs.emplace_back(x.info(), y.info());
+        },
+        std::ptrdiff_t(10), CGAL::Box_intersection_d::CLOSED);
+    std::sort(pairs.begin(), pairs.end());
+    counters_.face_pairs = pairs.size();
+    for (const auto& [fa, fb] : pairs) {
+      if (std::optional<Segment> s = cross_faces(ops_, fa, fb))
+        segments_.push_back(*s);
+    }
+  }
+
+  void number_crossings() {
+    for (const Segment& s : segments_) {
+      crossings_.push_back(s.from);
+      crossings_.push_back(s.to);
+    }
+    std::sort(crossings_.begin(), crossings_.end());
+    crossings_.erase(std::unique(crossings_.begin(), crossings_.end()),
+                     crossings_.end());
+    counters_.crossings = crossings_.size();
+    points_.reserve(crossings_.size());
+    for (const Crossing& c : crossings_) {
+      const TriangleMesh& edge_mesh = *ops_[c.mesh].mesh;
+      const TriangleMesh& face_mesh = *ops_[1 - c.mesh].mesh;
+      const auto& t = face_mesh.triangles[c.face];
+      points_.push_back(ImplicitPoint{
+          .p = edge_mesh.vertices[c.e0],
+          .q = edge_mesh.vertices[c.e1],
+          .plane = {face_mesh.vertices[t[0]], face_mesh.vertices[t[1]],
+                    face_mesh.vertices[t[2]]},
+          .is_vertex = false,
+          .p_below = c.p_below});
+    }
+    first_new_ = ops_[1].offset +
+                 static_cast<std::uint32_t>(ops_[1].mesh->vertices.size());
+    // Points on one edge, ordered from e0 by their parameter: crossings of
+    // one edge are neighbours in the sorted order.
+    for (std::size_t i = 0; i < crossings_.size();) {
+      std::size_t j = i + 1;
+      while (j < crossings_.size() && crossings_[j].mesh == crossings_[i].mesh &&
+             crossings_[j].e0 == crossings_[i].e0 &&
+             crossings_[j].e1 == crossings_[i].e1) {
+        ++j;
+      }
+      std::vector<std::uint32_t> run;
+      for (std::size_t k = i; k < j; ++k)
+        run.push_back(static_cast<std::uint32_t>(k));
+      if (run.size() > 1) {
+        std::sort(run.begin(), run.end(), [&](std::uint32_t x, std::uint32_t y) {
+          return along_edge(x, y) == CGAL::SMALLER;
+        });
+      }
+      const Crossing& c = crossings_[i];
+      edge_points_[c.mesh][edge_key(c.e0, c.e1)] = std::move(run);
+      i = j;
+    }
+  }
+
+  static std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
+    return (static_cast<std::uint64_t>(std::min(a, b)) << 32U) |
+           std::max(a, b);
+  }
+
+  std::uint32_t id_of(const Crossing& c) const {
+    const auto it = std::lower_bound(crossings_.begin(), crossings_.end(), c);
+    return first_new_ + static_cast<std::uint32_t>(it - crossings_.begin());
+  }
+
+  // Compares two points of one edge by their parameter from e0.
+  Sign along_edge(std::uint32_t x, std::uint32_t y) {
+    filters_.along_edge.fetch_add(1, std::memory_order_relaxed);
+    {
+      CGAL::Protect_FPU_rounding<true> guard;
+      const auto [nx, dx] = edge_parameter<Interval>(points_[x]);
+      const auto [ny, dy] = edge_parameter<Interval>(points_[y]);
+      const CGAL::Uncertain<Sign> s = CGAL::sign(nx * dy - ny * dx);
+      if (s.is_certain()) return s.make_certain();
+    }
+    filters_.along_edge_exact.fetch_add(1, std::memory_order_relaxed);
+    const auto [nx, dx] = edge_parameter<CGAL::Mpzf>(points_[x]);
+    const auto [ny, dy] = edge_parameter<CGAL::Mpzf>(points_[y]);
+    const Sign s = sign_of(nx * dy - ny * dx);
+    if (s == CGAL::ZERO) throw Failure{"two crossings of an edge coincide", true};
+    return s;
+  }
+
+  const ImplicitPoint& vertex_point(int m, std::uint32_t v) {
+    auto& table = vertex_points_[m];
+    if (table.empty()) {
+      table.resize(ops_[m].mesh->vertices.size());
+      for (std::size_t i = 0; i < table.size(); ++i)
+        table[i].p = ops_[m].mesh->vertices[i];
+    }
+    return table[v];
+  }
+
+  // Triangulates face f of operand m with its crossings, and keeps the
+  // pieces outside the other operand.
+  CutFaceResult triangulate(int m, std::uint32_t f, const CutFace& cut) {
+    CutFaceResult out;
+    const TriangleMesh& mesh = *ops_[m].mesh;
+    const auto& t = mesh.triangles[f];
+    const std::array<glm::dvec3, 3> c{mesh.vertices[t[0]], mesh.vertices[t[1]],
+                                      mesh.vertices[t[2]]};
+    Projection proj;
+    proj.origin = c[0];
+    const glm::dvec3 n = glm::cross(c[1] - c[0], c[2] - c[0]);
+    const glm::dvec3 an = glm::abs(n);
+    const int axis = an.x >= an.y && an.x >= an.z ? 0 : (an.y >= an.z ? 1 : 2);
+    // The exact sign of the normal's coordinate along the axis, from the
+    // projected triangle's orientation.
+    const auto other = [&](int k) { return (axis + k) % 3; };
+    const CGAL::Orientation o = CGAL::orientation(
+        K::Point_2(c[0][other(1)], c[0][other(2)]),
+        K::Point_2(c[1][other(1)], c[1][other(2)]),
+        K::Point_2(c[2][other(1)], c[2][other(2)]));
+    if (o == CGAL::COLLINEAR) throw Failure{"a degenerate face"};
+    proj.ax = o == CGAL::POSITIVE ? other(1) : other(2);
+    proj.ay = o == CGAL::POSITIVE ? other(2) : other(1);
+
+    // The face's points: corners, then points on its edges, then inside.
+    std::vector<FacePoint> pts;
+    pts.reserve(3 + cut.interior.size() + 2 * cut.segments.size());
+    const auto def_of = [&](std::uint32_t id) -> const ImplicitPoint& {
+      if (id >= first_new_) return points_[id - first_new_];
+      const int mm = id >= ops_[1].offset ? 1 : 0;
+      return vertex_point(mm, id - ops_[mm].offset);
+    };
+    {
+      CGAL::Protect_FPU_rounding<true> guard;
+      const auto add = [&](std::uint32_t id) {
+        const ImplicitPoint& d = def_of(id);
+        pts.push_back(FacePoint{&d, id, homogeneous<Interval>(d, proj.origin)});
+      };
+      for (int i = 0; i < 3; ++i) add(ops_[m].offset + t[i]);
+      for (int i = 0; i < 3; ++i) {
+        const auto it = edge_points_[m].find(edge_key(t[i], t[(i + 1) % 3]));
+        if (it == edge_points_[m].end()) continue;
+        for (const std::uint32_t k : it->second) add(first_new_ + k);
+      }
+      for (const std::uint32_t id : cut.interior) add(id);
+    }
+    Triangulation tr{Traits(&proj)};
+    std::unordered_map<std::uint32_t, Triangulation::Vertex_handle> handle;
+    const auto insert_at = [&](std::size_t k, Triangulation::Locate_type lt,
+                               Triangulation::Face_handle fh, int li) {
+      const auto vh = tr.insert(Traits::Point_2{&pts[k]}, lt, fh, li);
+      vh->info() = pts[k].id;
+      handle[pts[k].id] = vh;
+      return vh;
+    };
+    std::array<Triangulation::Vertex_handle, 3> corner;
+    for (int i = 0; i < 3; ++i) {
+      corner[i] = tr.insert(Traits::Point_2{&pts[i]});
+      corner[i]->info() = pts[i].id;
+      handle[pts[i].id] = corner[i];
+    }
+    std::size_t k = 3;
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t u = t[i];
+      const std::uint32_t v = t[(i + 1) % 3];
+      const auto it = edge_points_[m].find(edge_key(u, v));
+      if (it == edge_points_[m].end()) continue;
+      const std::size_t count = it->second.size();
+      // The edge's points run from its smaller end; insert them from u.
+      std::vector<std::size_t> order(count);
+      for (std::size_t j = 0; j < count; ++j)
+        order[j] = u < v ? k + j : k + count - 1 - j;
+      Triangulation::Vertex_handle prev = corner[i];
+      const Triangulation::Vertex_handle end = corner[(i + 1) % 3];
+      for (const std::size_t at : order) {
+        Triangulation::Face_handle fh;
+        int li = 0;
+        if (!tr.is_edge(prev, end, fh, li))
+          throw Failure{"an edge point lost its edge"};
+        prev = insert_at(at, Triangulation::EDGE, fh, li);
+      }
+      k += count;
+    }
+    for (; k < pts.size(); ++k) {
+      Triangulation::Locate_type lt;
+      int li = 0;
+      const Traits::Point_2 p{&pts[k]};
+      const Triangulation::Face_handle fh = tr.locate(p, lt, li);
+      // On an edge of the triangulation so far is fine (an edge of this
+      // face's plane crossing flat parts of the other operand puts several
+      // crossings on one line); on a vertex, or outside, is not.
+      if ((lt != Triangulation::FACE && lt != Triangulation::EDGE) ||
+          tr.is_infinite(fh)) {
+        throw Failure{"two crossings coincide in a face", true};
+      }
+      insert_at(k, lt, fh, li);
+    }
+    for (const auto& [from, to] : cut.segments)
+      tr.insert_constraint(handle.at(from), handle.at(to));
+
+    // Inside or outside, from the directed constraints, spread over the
+    // face across edges that no constraint holds.
+    const bool left_is_inside = m == 0;
+    const auto directed = [&](std::uint32_t a, std::uint32_t b) {
+      for (const auto& s : cut.segments) {
+        if (s.first == a && s.second == b) return 1;
+        if (s.first == b && s.second == a) return -1;
+      }
+      return 0;
+    };
+    const auto set_status = [](Triangulation::Face_handle fh, int inside) {
+      if (fh->info() == inside) return false;
+      if (fh->info() >= 0)
+        throw Failure{"a piece of a cut face is both inside and outside"};
+      fh->info() = inside;
+      return true;
+    };
+    std::vector<Triangulation::Face_handle> queue;
+    for (auto fh : tr.all_face_handles()) fh->info() = -1;
+    for (auto fh : tr.finite_face_handles()) {
+      for (int i = 0; i < 3; ++i) {
+        if (!fh->is_constrained(i)) continue;
+        const int d = directed(fh->vertex(tr.ccw(i))->info(),
+                               fh->vertex(tr.cw(i))->info());
+        if (d == 0) continue;
+        if (set_status(fh, (d > 0) == left_is_inside ? 1 : 0))
+          queue.push_back(fh);
+      }
+    }
+    while (!queue.empty()) {
+      const auto fh = queue.back();
+      queue.pop_back();
+      for (int i = 0; i < 3; ++i) {
+        if (fh->is_constrained(i)) continue;
+        const auto nb = fh->neighbor(i);
+        if (tr.is_infinite(nb)) continue;
+        if (set_status(nb, fh->info())) queue.push_back(nb);
+      }
+    }
+    for (auto fh : tr.finite_face_handles()) {
+      if (fh->info() < 0) throw Failure{"a piece of a cut face has no side"};
+      if (fh->info() == 0) {
+        out.kept.push_back({fh->vertex(0)->info(), fh->vertex(1)->info(),
+                            fh->vertex(2)->info()});
+      }
+    }
+    for (int i = 0; i < 3; ++i) {
+      Triangulation::Face_handle fh;
+      int li = 0;
+      if (!tr.is_edge(corner[i], corner[(i + 1) % 3], fh, li)) continue;
+      if (tr.is_infinite(fh)) fh = fh->neighbor(li);
+      out.edge_inside[i] = fh->info();
+    }
+    out.orient_calls = proj.orient_calls;
+    out.orient_exact = proj.orient_exact;
+    return out;
+  }
+
+  void classify(int m, std::vector<std::uint8_t>& inside,
+                std::vector<std::array<std::uint32_t, 3>>& kept) {
+    const TriangleMesh& mesh = *ops_[m].mesh;
+    const auto nf = static_cast<std::uint32_t>(mesh.triangles.size());
+    std::unordered_map<std::uint32_t, CutFace> cut;
+    for (const Segment& s : segments_) {
+      const std::uint32_t f = m == 0 ? s.face_a : s.face_b;
+      cut[f].segments.emplace_back(id_of(s.from), id_of(s.to));
+    }
+    for (std::size_t i = 0; i < crossings_.size(); ++i) {
+      const Crossing& c = crossings_[i];
+      if (static_cast<int>(c.mesh) == m) continue;
+      cut[c.face].interior.push_back(first_new_ +
+                                     static_cast<std::uint32_t>(i));
+    }
+    counters_.cut_faces += cut.size();
+    std::vector<std::uint32_t> cut_faces;
+    for (const auto& [f, c] : cut) cut_faces.push_back(f);
+    std::sort(cut_faces.begin(), cut_faces.end());
+
+    // Neighbours across each edge.
+    std::unordered_map<std::uint64_t, std::uint32_t> by_edge;
+    by_edge.reserve(3 * nf);
+    for (std::uint32_t f = 0; f < nf; ++f) {
+      const auto& t = mesh.triangles[f];
+      for (int i = 0; i < 3; ++i) {
+        by_edge[(static_cast<std::uint64_t>(t[i]) << 32U) | t[(i + 1) % 3]] = f;
+      }
+    }
+    const auto neighbour = [&](std::uint32_t f, int i) {
+      const auto& t = mesh.triangles[f];
+      const auto it = by_edge.find(
+          (static_cast<std::uint64_t>(t[(i + 1) % 3]) << 32U) | t[i]);
+      if (it == by_edge.end()) throw Failure{"an operand is not closed"};
+      return it->second;
+    };
+    std::vector<std::uint8_t> is_cut(nf, 0);
+    for (const std::uint32_t f : cut_faces) is_cut[f] = 1;
+    // -1 unknown, 0 outside, 1 inside: for each uncut face, by its surface.
+    std::vector<int> seed(nf, -1);
+    UnionFind surfaces(nf);
+    for (std::uint32_t f = 0; f < nf; ++f) {
+      if (is_cut[f]) continue;
+      if (!face_box_overlaps_[m][f]) seed[f] = 0;
+      for (int i = 0; i < 3; ++i) {
+        const std::uint32_t g = neighbour(f, i);
+        if (!is_cut[g]) surfaces.join(f, g);
+      }
+    }
+    for (const std::uint32_t f : cut_faces) {
+      CutFaceResult r = triangulate(m, f, cut.at(f));
+      filters_.orient_2d.fetch_add(r.orient_calls, std::memory_order_relaxed);
+      filters_.orient_2d_exact.fetch_add(r.orient_exact,
+                                         std::memory_order_relaxed);
+      for (const auto& tri : r.kept) kept.push_back(tri);
+      for (int i = 0; i < 3; ++i) {
+        if (r.edge_inside[i] < 0) continue;
+        const std::uint32_t g = neighbour(f, i);
+        if (is_cut[g]) continue;
+        if (seed[g] >= 0 && seed[g] != r.edge_inside[i])
+          throw Failure{"a surface is both inside and outside"};
+        seed[g] = r.edge_inside[i];
+      }
+    }
+    // One side per surface: its seeds agree, or one inside test decides.
+    std::vector<int> side(nf, -1);
+    for (std::uint32_t f = 0; f < nf; ++f) {
+      if (is_cut[f] || seed[f] < 0) continue;
+      const std::uint32_t r = surfaces.find(f);
+      if (side[r] >= 0 && side[r] != seed[f])
+        throw Failure{"a surface is both inside and outside"};
+      side[r] = seed[f];
+    }
+    inside.assign(nf, 0);
+    for (std::uint32_t f = 0; f < nf; ++f) {
+      if (is_cut[f]) continue;
+      const std::uint32_t r = surfaces.find(f);
+      if (side[r] < 0) side[r] = inside_other(m, mesh.triangles[f][0]) ? 1 : 0;
+      inside[f] = static_cast<std::uint8_t>(side[r]);
+      if (side[r] == 0) {
+        const auto& t = mesh.triangles[f];
+        kept.push_back({ops_[m].offset + t[0], ops_[m].offset + t[1],
+                        ops_[m].offset + t[2]});
+      }
+    }
+  }
+
+  // Whether vertex v of operand m lies inside the other operand: for a
+  // surface that no crossing touches (a part inside another, or beside it
+  // within its box).
+  bool inside_other(int m, std::uint32_t v) {
+    ++counters_.inside_tests;
+    const int o = 1 - m;
+    if (!side_of_[o]) {
+      const TriangleMesh& mesh = *ops_[o].mesh;
+      surface_[o] = std::make_unique<CGAL::Surface_mesh<Point3>>();
+      auto& sm = *surface_[o];
+      for (const glm::dvec3& p : mesh.vertices) sm.add_vertex(point3(p));
+      using VI = CGAL::Surface_mesh<Point3>::Vertex_index;
+      for (const auto& t : mesh.triangles)
+        sm.add_face(VI(t[0]), VI(t[1]), VI(t[2]));
+      side_of_[o] = std::make_unique<
+          CGAL::Side_of_triangle_mesh<CGAL::Surface_mesh<Point3>, K>>(sm);
+    }
+    const CGAL::Bounded_side s =
+        (*side_of_[o])(point3(ops_[m].mesh->vertices[v]));
+    if (s == CGAL::ON_BOUNDARY)
+      throw Failure{"a vertex lies on the other operand", true};
+    return s == CGAL::ON_BOUNDED_SIDE;
+  }
+
+  // The kept triangles over the points they use: first the operands'
+  // vertices in order, then the new points, rounded to doubles.
+  TriangleMesh assemble(
+      const std::array<std::vector<std::array<std::uint32_t, 3>>, 2>& kept,
+      std::size_t& first_new) {
+    const std::uint32_t total =
+        first_new_ + static_cast<std::uint32_t>(points_.size());
+    std::vector<std::uint32_t> index(total, UINT32_MAX);
+    for (const auto& list : kept)
+      for (const auto& t : list)
+        for (const std::uint32_t v : t) index[v] = 0;
+    TriangleMesh out;
+    bool any_new = false;
+    for (std::uint32_t v = 0; v < total; ++v) {
+      if (index[v] == UINT32_MAX) continue;
+      index[v] = static_cast<std::uint32_t>(out.vertices.size());
+      if (v < first_new_) {
+        const int m = v >= ops_[1].offset ? 1 : 0;
+        out.vertices.push_back(ops_[m].mesh->vertices[v - ops_[m].offset]);
+      } else {
+        if (!any_new) first_new = out.vertices.size();
+        any_new = true;
+        out.vertices.push_back(rounded(points_[v - first_new_]));
+      }
+    }
+    if (!any_new) first_new = out.vertices.size();
+    for (const auto& list : kept) {
+      for (const auto& t : list)
+        out.triangles.push_back({index[t[0]], index[t[1]], index[t[2]]});
+    }
+    return out;
+  }
+
+  // The point rounded to doubles: from an interval around its offset from
+  // the edge's first end, as tight as one unit in the last place, else
+  // exactly (Mpzf, then MPFR's rounding to nearest).
+  static glm::dvec3 rounded(const ImplicitPoint& point) {
+    glm::dvec3 out;
+    bool done = true;
+    {
+      CGAL::Protect_FPU_rounding<true> guard;
+      const Homogeneous<Interval> h = homogeneous<Interval>(point, point.p);
+      for (int k = 0; k < 3; ++k) {
+        const Interval x = h.xyz[k] / h.w + Interval(point.p[k]);
+        if (x.inf() == x.sup() || std::nextafter(x.inf(), x.sup()) == x.sup()) {
+          out[k] = x.inf();
+        } else {
+          done = false;
+        }
+      }
+    }
+    if (done) return out;
+    const Homogeneous<CGAL::Mpzf> h =
+        homogeneous<CGAL::Mpzf>(point, glm::dvec3(0.0));
+    const CGAL::Gmpq w(h.w);
+    mpfr_t r;
+    mpfr_init2(r, 53);
+    for (int k = 0; k < 3; ++k) {
+      const CGAL::Gmpq x = CGAL::Gmpq(h.xyz[k]) / w;
+      mpfr_set_q(r, x.mpq(), MPFR_RNDN);
+      out[k] = mpfr_get_d(r, MPFR_RNDN);
+    }
+    mpfr_clear(r);
+    return out;
+  }
+
+  std::array<Operand, 2> ops_;
+  FilterCounters& filters_;
+  PairCounters counters_;
+  std::array<CGAL::Bbox_3, 2> mesh_box_;
+  std::array<std::vector<std::uint8_t>, 2> face_box_overlaps_;
+  std::vector<Segment> segments_;
+  std::vector<Crossing> crossings_;
+  std::vector<ImplicitPoint> points_;
+  std::uint32_t first_new_ = 0;
+  std::array<std::unordered_map<std::uint64_t, std::vector<std::uint32_t>>, 2>
+      edge_points_;
+  std::array<std::vector<ImplicitPoint>, 2> vertex_points_;
+  std::array<std::unique_ptr<CGAL::Surface_mesh<Point3>>, 2> surface_;
+  std::array<std::unique_ptr<
+                 CGAL::Side_of_triangle_mesh<CGAL::Surface_mesh<Point3>, K>>,
+             2>
+      side_of_;
+};
+
+}  // namespace
+
+PairUnion unite_pair(const TriangleMesh& a, const TriangleMesh& b,
+                     FilterCounters& filters) {
+  return Engine(a, b, filters).run();
+}
+
+}  // namespace lsolid::exact_union

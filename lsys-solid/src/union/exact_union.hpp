@@ -1,0 +1,51 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "lsolid/mesh.hpp"
+
+namespace lsolid::exact_union {
+
+/// How often the interval filter could not decide, per predicate.
+struct FilterCounters {
+  std::atomic<std::uint64_t> orient_2d{0};
+  std::atomic<std::uint64_t> orient_2d_exact{0};
+  std::atomic<std::uint64_t> along_edge{0};
+  std::atomic<std::uint64_t> along_edge_exact{0};
+};
+
+/// What one union of two operands found and asked.
+struct PairCounters {
+  std::size_t face_pairs = 0;  ///< pairs of faces whose boxes meet
+  std::size_t crossings = 0;   ///< edge–face crossings, each decided once
+  std::size_t cut_faces = 0;   ///< faces triangulated again
+  std::size_t inside_tests = 0;  ///< surfaces no crossing touches, tested
+};
+
+/// The union of two operands, its new points rounded to doubles: those
+/// from `first_new` on. `failure` says why there is none: a degeneracy
+/// (`degenerate`: a vertex on a face, faces that touch, an edge through an
+/// edge), which a shift of one operand removes, or a broken invariant.
+struct PairUnion {
+  TriangleMesh mesh;
+  std::size_t first_new = 0;
+  bool degenerate = false;
+  std::string failure;
+  PairCounters counters;
+};
+
+/// The union of `a` and `b`: every edge–face crossing decided once, exactly,
+/// on the input coordinates; cut faces triangulated with the crossings as
+/// implicit points; inside and outside inherited across the surfaces
+/// (docs/design.md, "The exact union engine").
+/// @pre both are closed, outward-oriented 2-manifolds without
+///   self-intersections, with double coordinates.
+[[nodiscard]] PairUnion unite_pair(const TriangleMesh& a, const TriangleMesh& b,
+                                   FilterCounters& filters);
+
+}  // namespace lsolid::exact_union

@@ -64,14 +64,16 @@ void print_report(const SolidReport& r, bool united) {
         r.cavities_filled, r.witnesses_checked);
     if (u.engine == UnionEngine::ExactCrossings) {
       fmt::print(
-          "union engine: exact, {} unions, {} fallbacks to the corefinement; "
-          "{} crossings, {} faces cut; {} predicates on implicit points, {} "
-          "({:.2f}%) evaluated exactly\n",
-          u.exact_unions, u.fallbacks, u.crossings, u.cut_faces, u.predicates,
-          u.filter_failures,
+          "union engine: exact, {} unions, {} where parts touch and {} "
+          "fallbacks left to the corefinement; {} crossings, {} faces cut; {} "
+          "predicates on implicit points, {} ({:.2f}%) evaluated exactly\n",
+          u.exact_unions, u.degenerate_unions, u.fallbacks, u.crossings,
+          u.cut_faces, u.predicates, u.filter_failures,
           u.predicates == 0 ? 0.0
                             : 100.0 * static_cast<double>(u.filter_failures) /
                                   static_cast<double>(u.predicates));
+      if (!u.degenerate_reason.empty())
+        fmt::print("union engine: parts touch: {}\n", u.degenerate_reason);
       if (!u.fallback_reason.empty())
         fmt::print("union engine: fell back: {}\n", u.fallback_reason);
     } else {

@@ -25,6 +25,24 @@ bool fits_bed(const Box& bounds, const glm::dvec3& bed_mm) {
          size.z <= bed_mm.z + kSlack;
 }
 
+namespace {
+
+// What the union engine did, as the text report's `union engine:` line.
+Json union_engine_json(const UnionStats& u) {
+  return Json{{"engine", engine_name(u.engine)},
+              {"exact_unions", u.exact_unions},
+              {"degenerate_unions", u.degenerate_unions},
+              {"degenerate_reason", u.degenerate_reason},
+              {"fallbacks", u.fallbacks},
+              {"fallback_reason", u.fallback_reason},
+              {"crossings", u.crossings},
+              {"cut_faces", u.cut_faces},
+              {"predicates", u.predicates},
+              {"filter_failures", u.filter_failures}};
+}
+
+}  // namespace
+
 Json report_json(const Solid& solid, const OverhangReport& over,
                  const std::optional<glm::dvec3>& bed, bool fits,
                  const std::filesystem::path& output, bool written, bool united,
@@ -81,6 +99,7 @@ Json report_json(const Solid& solid, const OverhangReport& over,
               {"surface_plates", r.sheets},
               {"contacts", r.union_stats.contacts},
               {"booleans", r.union_stats.booleans},
+              {"union_engine", union_engine_json(r.union_stats)},
               {"mm_per_unit", r.mm_per_unit},
               {"base", std::move(base)},
               {"lies_flat", p.lies_flat},

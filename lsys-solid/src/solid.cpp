@@ -234,16 +234,16 @@ void decimate_and_check(TriangleMesh& mesh, const PartsKept& kept,
 // @throws GeometryError as union_parts and check_union_kept.
 void unite_and_round(std::vector<Part> parts, UnionEngine engine,
                      const PartsKept& kept, const SolidOptions& options,
-                     SolidReport& report, TriangleMesh& mesh,
-                     Stopwatch& clock, const Progress& tell) {
-  UnionResult united =
-      union_parts(std::move(parts),
-                  {.progress = [&](double done) { tell("union", done); },
-                   .expect =
-                       [&](double seconds) {
-                         if (options.expect) options.expect("union", seconds);
-                       },
-                   .engine = engine});
+                     SolidReport& report, TriangleMesh& mesh, Stopwatch& clock,
+                     const Progress& tell) {
+  UnionResult united = union_parts(
+      std::move(parts), {.progress = [&](double done) { tell("union", done); },
+                         .expect =
+                             [&](double seconds) {
+                               if (options.expect)
+                                 options.expect("union", seconds);
+                             },
+                         .engine = engine});
   CavitiesFilled filled = fill_cavities(std::move(united.mesh));
   report.union_stats = united.stats;
   report.cavities_filled = filled.removed;
@@ -288,16 +288,16 @@ void unite_and_finish(std::vector<Part> parts, const SolidOptions& options,
     } catch (const GeometryError& e) {
       const std::size_t fallbacks = report.union_stats.fallbacks;
       const std::string reason =
-          std::string("the exact engine's union failed its check: ") +
-          e.what();
+          std::string("the exact engine's union failed its check: ") + e.what();
       mesh = {};
       unite_and_round(std::move(spare), UnionEngine::Corefinement, kept,
                       options, report, mesh, clock, tell);
       report.union_stats.engine = UnionEngine::ExactCrossings;
       report.union_stats.fallbacks += fallbacks + 1;
       report.union_stats.fallback_reason = reason;
-      report.warnings.push_back(reason + "; united again by CGAL's "
-                                         "corefinement");
+      report.warnings.push_back(reason +
+                                "; united again by CGAL's "
+                                "corefinement");
     }
   } else {
     unite_and_round(std::move(parts), options.union_engine, kept, options,

@@ -605,6 +605,41 @@ TEST_F(Build, WritesTheSameBytesEveryRun) {
   }
 }
 
+TEST_F(Build, UnitesWithTheEngineAskedAndSaysWhatItDid) {
+  use_printable("abop-1.25-bush", "bush.ls");
+  const auto exact =
+      run_command(lsolid() + " bush.ls -n 3 --no-decimate -o e.off", dir_);
+  ASSERT_EQ(exact.exit_code, 0) << exact.err;
+  const std::regex line(R"(\nunion engine: exact, (\d+) unions, (\d+) where )"
+                        R"(parts touch and 0 fallbacks left to the )"
+                        R"(corefinement; (\d+) crossings)");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(exact.out, m, line)) << exact.out;
+  EXPECT_GT(std::stoi(m[1]), 0);
+  EXPECT_GT(std::stoi(m[3]), 0);
+  const auto oracle = run_command(
+      lsolid() + " bush.ls -n 3 --no-decimate --union-engine corefine -o c.off",
+      dir_);
+  ASSERT_EQ(oracle.exit_code, 0) << oracle.err;
+  EXPECT_NE(oracle.out.find("\nunion engine: corefine (CGAL's corefinement)\n"),
+            std::string::npos)
+      << oracle.out;
+  const std::regex volume(R"(\nvolume: ([\d.]+) mm³)");
+  std::smatch ve;
+  std::smatch vc;
+  ASSERT_TRUE(std::regex_search(exact.out, ve, volume));
+  ASSERT_TRUE(std::regex_search(oracle.out, vc, volume));
+  EXPECT_EQ(ve[1], vc[1]);
+  const auto json = run_command(
+      lsolid() + " bush.ls -n 3 --no-decimate --json -o j.off", dir_);
+  EXPECT_NE(json.out.find(R"("union_engine":{)"), std::string::npos);
+  EXPECT_NE(json.out.find(R"("engine":"exact")"), std::string::npos);
+  const auto bad =
+      run_command(lsolid() + " bush.ls --union-engine fast -o b.off", dir_);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--union-engine"), std::string::npos) << bad.err;
+}
+
 TEST_F(Build, FusesTubesThatTouch) {
   // Width 1 and a sideways step of 1: the circles of the two tubes touch.
   {
@@ -686,6 +721,7 @@ TEST_F(Build, IsQuietOrSpeaksJsonWhenAsked) {
                                             "surface_plates",
                                             "contacts",
                                             "booleans",
+                                            "union_engine",
                                             "mm_per_unit",
                                             "base",
                                             "lies_flat",

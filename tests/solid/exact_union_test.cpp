@@ -1,15 +1,19 @@
 // Copyright 2026 the lsolid authors
 // SPDX-License-Identifier: MIT
-#include "union/exact_union.hpp"
+#include "cgal/union/exact_union.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
+#include <random>
 #include <vector>
 
+#include "lsolid/boolean.hpp"
 #include "lsolid/parts.hpp"
+#include "lsolid/validate.hpp"
+#include "shells.hpp"
 #include "support/mesh_checks.hpp"
 
 namespace lsolid::exact_union {
@@ -57,8 +61,9 @@ TriangleMesh prism(const glm::dvec3& a, const glm::dvec3& b, double radius,
 
 TEST(ExactUnion, UnitesTwoBoxesInGeneralPositionToTheirVolume) {
   FilterCounters filters;
-  const PairUnion u = unite_pair(box_mesh({0, 0, 0}, {2, 2, 2}),
-                                 box_mesh({1.1, 1.2, 1.3}, {3, 3.5, 4}), filters);
+  const PairUnion u =
+      unite_pair(box_mesh({0, 0, 0}, {2, 2, 2}),
+                 box_mesh({1.1, 1.2, 1.3}, {3, 3.5, 4}), filters);
   ASSERT_TRUE(u.failure.empty()) << u.failure;
   expect_printable(u.mesh);
   EXPECT_NEAR(signed_volume(u.mesh), 8.0 + 1.9 * 2.3 * 2.7 - 0.9 * 0.8 * 0.7,
@@ -79,8 +84,10 @@ TEST(ExactUnion, KeepsAPartThatNoFaceCrossesOutsideAndDropsOneInside) {
 
 TEST(ExactUnion, UnitesCrossingPrismsAsTheirVolumeSays) {
   FilterCounters filters;
-  const TriangleMesh a = prism({-3, 0.01, 0.02}, {3, 0.03, -0.01}, 1.0, 12, 0.1);
-  const TriangleMesh b = prism({0.02, -3, 0.01}, {-0.01, 3, 0.03}, 0.8, 10, 0.2);
+  const TriangleMesh a =
+      prism({-3, 0.01, 0.02}, {3, 0.03, -0.01}, 1.0, 12, 0.1);
+  const TriangleMesh b =
+      prism({0.02, -3, 0.01}, {-0.01, 3, 0.03}, 0.8, 10, 0.2);
   ASSERT_GT(signed_volume(a), 0.0);
   const PairUnion u = unite_pair(a, b, filters);
   ASSERT_TRUE(u.failure.empty()) << u.failure;
@@ -89,10 +96,87 @@ TEST(ExactUnion, UnitesCrossingPrismsAsTheirVolumeSays) {
   EXPECT_LT(signed_volume(u.mesh), signed_volume(a) + signed_volume(b));
 }
 
+// Random prisms in a 10 mm box, as the tubes of a tree meet: rings of 6 to
+// 16 sides, radii 0.3 to 1.5 mm, turned at random.
+std::vector<Part> random_tubes(unsigned seed, int count) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> coordinate(0.0, 10.0);
+  std::uniform_real_distribution<double> radius(0.3, 1.5);
+  std::uniform_real_distribution<double> phase(0.0, 1.0);
+  std::uniform_int_distribution<int> sides(6, 16);
+  std::vector<Part> parts;
+  for (int i = 0; i < count; ++i) {
+    const glm::dvec3 a(coordinate(random), coordinate(random),
+                       coordinate(random));
+    glm::dvec3 b(coordinate(random), coordinate(random), coordinate(random));
+    b = a + 0.5 * (b - a);
+    std::string label = "tube ";
+    label += std::to_string(i);
+    parts.push_back(
+        {prism(a, b, radius(random), sides(random), phase(random)), label});
+  }
+  return parts;
+}
+
+// The Euler characteristic of a closed triangle mesh, V − E + F.
+long euler_characteristic(const TriangleMesh& m) {
+  return static_cast<long>(m.vertices.size()) -
+         static_cast<long>(m.triangles.size()) / 2;
+}
+
+TEST(ExactUnion, AgreesWithTheCorefinementOnRandomTubes) {
+  for (unsigned seed = 1; seed <= 6; ++seed) {
+    const std::vector<Part> parts = random_tubes(seed, 40);
+    const UnionResult exact =
+        union_parts(parts, {.engine = UnionEngine::ExactCrossings});
+    const UnionResult oracle =
+        union_parts(parts, {.engine = UnionEngine::Corefinement});
+    SCOPED_TRACE(seed);
+    EXPECT_GT(exact.stats.exact_unions, 0U);
+    EXPECT_EQ(exact.stats.fallbacks, 0U) << exact.stats.fallback_reason;
+    EXPECT_EQ(exact.stats.degenerate_unions, 0U)
+        << exact.stats.degenerate_reason;
+    const double volume = signed_volume(oracle.mesh);
+    EXPECT_NEAR(signed_volume(exact.mesh), volume, 1e-9 * volume);
+    EXPECT_EQ(label_shells(exact.mesh).count, label_shells(oracle.mesh).count);
+    EXPECT_EQ(euler_characteristic(exact.mesh),
+              euler_characteristic(oracle.mesh));
+    const ValidationReport check = validate(exact.mesh);
+    EXPECT_EQ(check.boundary_edges, 0U);
+    EXPECT_EQ(check.non_manifold_edges, 0U);
+    EXPECT_EQ(check.non_manifold_vertices, 0U);
+    EXPECT_EQ(check.genus, validate(oracle.mesh).genus);
+  }
+}
+
+TEST(ExactUnion, CountsItsPredicatesAndDecidesMostInIntervals) {
+  const UnionResult u = union_parts(random_tubes(7, 40));
+  EXPECT_GT(u.stats.predicates, 1000U);
+  EXPECT_LT(static_cast<double>(u.stats.filter_failures),
+            0.1 * static_cast<double>(u.stats.predicates));
+  EXPECT_GT(u.stats.crossings, 0U);
+  EXPECT_GT(u.stats.cut_faces, 0U);
+}
+
+TEST(ExactUnion, LeavesTouchingPartsToTheCorefinementWhichUnitesThemExactly) {
+  std::vector<Part> parts{{box_mesh({0, 0, 0}, {2, 2, 2}), "a"},
+                          {box_mesh({1, 1, 1}, {3, 3, 3}), "b"}};
+  const UnionResult u = union_parts(std::move(parts));
+  EXPECT_EQ(u.stats.degenerate_unions, 1U);
+  EXPECT_EQ(u.stats.exact_unions, 0U);
+  EXPECT_NE(u.stats.degenerate_reason.find(" with "), std::string::npos)
+      << u.stats.degenerate_reason;
+  EXPECT_NE(u.stats.degenerate_reason.find(": an edge passes through an edge"),
+            std::string::npos)
+      << u.stats.degenerate_reason;
+  EXPECT_DOUBLE_EQ(signed_volume(u.mesh), 15.0);
+}
+
 TEST(ExactUnion, RefusesFacesThatTouchAsADegeneracy) {
   FilterCounters filters;
-  const PairUnion u = unite_pair(box_mesh({0, 0, 0}, {1, 1, 1}),
-                                 box_mesh({1, 0.2, 0.3}, {2, 0.7, 0.8}), filters);
+  const PairUnion u =
+      unite_pair(box_mesh({0, 0, 0}, {1, 1, 1}),
+                 box_mesh({1, 0.2, 0.3}, {2, 0.7, 0.8}), filters);
   EXPECT_TRUE(u.degenerate);
   EXPECT_FALSE(u.failure.empty());
 }

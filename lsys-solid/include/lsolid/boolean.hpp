@@ -49,8 +49,13 @@ struct UnionStats {
   /// Unions the exact engine computed (the rest of `booleans` were
   /// corefinements).
   std::size_t exact_unions = 0;
-  /// Unions the exact engine gave back to the corefinement, and the first
-  /// reason it gave.
+  /// Unions the exact engine left to the corefinement because the operands
+  /// touch (coplanar faces, a vertex on a face): the corefinement unites
+  /// those exactly.
+  std::size_t degenerate_unions = 0;
+  std::string degenerate_reason;  ///< the first of those
+  /// Unions the exact engine gave back to the corefinement for any other
+  /// reason (the safety net), and the first reason it gave.
   std::size_t fallbacks = 0;
   std::string fallback_reason;
   std::size_t crossings = 0;  ///< edge–face crossings the engine decided

@@ -24,17 +24,17 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
-#include <optional>
 #include <glm/common.hpp>
+#include <optional>
 #include <set>
 #include <string>
 #include <unordered_map>
 
+#include "cgal/union/exact_union.hpp"
 #include "conversion.hpp"
 #include "golden.hpp"
 #include "lsolid/errors.hpp"
 #include "lsolid/rounding.hpp"
-#include "union/exact_union.hpp"
 
 namespace lsolid {
 namespace {
@@ -174,24 +174,6 @@ bool round_new_points(ExactMesh& mesh) {
   return true;
 }
 
-// The exact engine's union, its new points (from `first_new` on) rounded:
-// kept if it is a closed 2-manifold whose faces near the new points are
-// neither degenerate nor intersecting.
-bool rounded_union_is_valid(const TriangleMesh& mesh, std::size_t first_new) {
-  const std::optional<InexactMesh> sm = to_surface_mesh<InexactMesh>(mesh);
-  if (!sm || sm->number_of_faces() == 0 || !CGAL::is_closed(*sm) ||
-      !CGAL::is_valid_polygon_mesh(*sm)) {
-    return false;
-  }
-  std::vector<InexactMesh::Face_index> near_new;
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-    const auto& t = mesh.triangles[f];
-    if (t[0] >= first_new || t[1] >= first_new || t[2] >= first_new)
-      near_new.emplace_back(static_cast<std::uint32_t>(f));
-  }
-  return valid_near(*sm, near_new);
-}
-
 // Where some new points had to stay exact, the whole union is rounded to
 // doubles and mended as the final mesh is (round_and_repair: slivers
 // collapsed or flipped, intersecting faces rebuilt), so that the next union
@@ -235,7 +217,8 @@ class Unioner {
  public:
   Unioner(std::vector<Part> parts, std::function<void(double)> progress,
           UnionEngine engine)
-      : parts_(std::move(parts)), progress_(std::move(progress)),
+      : parts_(std::move(parts)),
+        progress_(std::move(progress)),
         engine_(engine) {
     stats_.engine = engine;
   }
@@ -364,45 +347,28 @@ class Unioner {
     return g;
   }
 
-  // The exact engine's union of two groups of double coordinates, retried
-  // with one operand shifted where it meets a degeneracy; nothing if it
-  // could not, and the reason in last_failure_. Intermediate results
-  // (`round_points`) must stay valid once rounded: else they are mended as
-  // the corefinement's are, or given back.
+  // The exact engine's union of two groups of double coordinates; nothing
+  // if it met a degeneracy (`degenerate_`) or failed, with the reason in
+  // last_failure_. Intermediate results (`round_points`) must stay valid
+  // once rounded: else they are mended as the corefinement's are, or given
+  // back.
   std::optional<TriangleMesh> exact_union(const Group& a, const Group& b,
                                           bool round_points) {
-    for (int attempt = 0; attempt < kAttempts; ++attempt) {
-      const TriangleMesh* second = &b.plain;
-      TriangleMesh shifted;
-      if (attempt > 0) {
-        const double d = kPerturbationMm * attempt;
-        shifted = b.plain;
-        for (glm::dvec3& p : shifted.vertices)
-          p += glm::dvec3(d * kShift[0], d * kShift[1], d * kShift[2]);
-        second = &shifted;
-        ++stats_.retries;
-      }
-      exact_union::PairUnion u = exact_union::unite_pair(a.plain, *second,
-                                                        filters_);
-      stats_.crossings += u.counters.crossings;
-      stats_.cut_faces += u.counters.cut_faces;
-      if (!u.failure.empty()) {
-        last_failure_ = u.failure;
-        if (u.degenerate) continue;
-        return std::nullopt;
-      }
-      if (!round_points) return std::move(u.mesh);
-      if (rounded_union_is_valid(u.mesh, u.first_new)) {
-        ++stats_.rounded;
-        return std::move(u.mesh);
-      }
-      if (std::optional<TriangleMesh> m = mended(u.mesh)) {
-        ++stats_.rounded;
-        return m;
-      }
-      last_failure_ = "its new points could not be rounded to doubles";
+    exact_union::PairUnion u =
+        exact_union::unite_pair(a.plain, b.plain, filters_);
+    stats_.crossings += u.counters.crossings;
+    stats_.cut_faces += u.counters.cut_faces;
+    degenerate_ = u.degenerate;
+    if (!u.failure.empty()) {
+      last_failure_ = u.failure;
       return std::nullopt;
     }
+    if (!round_points) return std::move(u.mesh);
+    ++stats_.rounded;
+    if (exact_union::rounding_kept_valid(u)) return std::move(u.mesh);
+    if (std::optional<TriangleMesh> m = mended(u.mesh)) return m;
+    --stats_.rounded;
+    last_failure_ = "its new points could not be rounded to doubles";
     return std::nullopt;
   }
 
@@ -421,11 +387,21 @@ class Unioner {
         a.parts.insert(a.parts.end(), b.parts.begin(), b.parts.end());
         return a;
       }
-      ++stats_.fallbacks;
-      if (stats_.fallback_reason.empty()) {
-        stats_.fallback_reason =
-            "the union of " + describe(a) + " with " + describe(b) + ": " +
-            last_failure_;
+      // A degeneracy (faces that touch, a vertex on a face) goes to the
+      // corefinement, which handles coplanar faces exactly; a shift, which
+      // the exact engine could use, would move the result by 10⁻⁵ mm.
+      if (degenerate_) {
+        ++stats_.degenerate_unions;
+        if (stats_.degenerate_reason.empty()) {
+          stats_.degenerate_reason = "the union of " + describe(a) + " with " +
+                                     describe(b) + ": " + last_failure_;
+        }
+      } else {
+        ++stats_.fallbacks;
+        if (stats_.fallback_reason.empty()) {
+          stats_.fallback_reason = "the union of " + describe(a) + " with " +
+                                   describe(b) + ": " + last_failure_;
+        }
       }
     }
     for (int attempt = 0; attempt < kAttempts; ++attempt) {
@@ -565,6 +541,7 @@ class Unioner {
   UnionStats stats_;
   exact_union::FilterCounters filters_;
   std::string last_failure_;  // what CGAL said, if it threw
+  bool degenerate_ = false;   // the exact engine's last failure
 };
 
 }  // namespace

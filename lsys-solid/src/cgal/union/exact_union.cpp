@@ -14,9 +14,9 @@
 // so that no orientation test whose answer is known (collinear: exactly
 // zero, which no filter can certify) is asked (docs/design.md, "The exact
 // union engine").
-#include "union/exact_union.hpp"
+#include "cgal/union/exact_union.hpp"
 
-#include <CGAL/Constrained_triangulation_2.h>
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
@@ -37,7 +37,8 @@
 #include <utility>
 #include <vector>
 
-#include "union/implicit_point.hpp"
+#include "cgal/triangle_pair.hpp"
+#include "cgal/union/implicit_point.hpp"
 #include "union_find.hpp"
 
 namespace lsolid::exact_union {
@@ -144,10 +145,10 @@ std::optional<Segment> cross_faces(const std::array<Operand, 2>& ops,
       const Sign s0 = orient(u, v, plane[0], plane[1]);
       const Sign s1 = orient(u, v, plane[1], plane[2]);
       const Sign s2 = orient(u, v, plane[2], plane[0]);
-      const bool any_pos = s0 == CGAL::POSITIVE || s1 == CGAL::POSITIVE ||
-                           s2 == CGAL::POSITIVE;
-      const bool any_neg = s0 == CGAL::NEGATIVE || s1 == CGAL::NEGATIVE ||
-                           s2 == CGAL::NEGATIVE;
+      const bool any_pos =
+          s0 == CGAL::POSITIVE || s1 == CGAL::POSITIVE || s2 == CGAL::POSITIVE;
+      const bool any_neg =
+          s0 == CGAL::NEGATIVE || s1 == CGAL::NEGATIVE || s2 == CGAL::NEGATIVE;
       if (any_pos && any_neg) continue;
       if (s0 == CGAL::ZERO || s1 == CGAL::ZERO || s2 == CGAL::ZERO)
         throw Failure{"an edge passes through an edge", true};
@@ -162,8 +163,8 @@ std::optional<Segment> cross_faces(const std::array<Operand, 2>& ops,
       // Walking the face's boundary counter-clockwise, the crossing at the
       // segment's forward end goes from above to below the other face in
       // face a, and from below to above in face b.
-      is_forward[found] = m == 0 ? side[m][i] == CGAL::POSITIVE
-                                 : side[m][i] == CGAL::NEGATIVE;
+      is_forward[found] =
+          m == 0 ? side[m][i] == CGAL::POSITIVE : side[m][i] == CGAL::NEGATIVE;
       ++found;
     }
   }
@@ -181,7 +182,24 @@ struct FacePoint {
   const ImplicitPoint* def = nullptr;
   std::uint32_t id = 0;
   Homogeneous<Interval> approx;
+  // The projected coordinates as intervals (x / w): a first filter of low
+  // degree, tight where the point is well defined; the homogeneous form,
+  // then Mpzf, decide what it cannot.
+  std::array<Interval, 2> xy;
 };
+
+FacePoint face_point(const ImplicitPoint& def, std::uint32_t id,
+                     const glm::dvec3& origin, int ax, int ay) {
+  FacePoint p{&def, id, homogeneous<Interval>(def, origin), {}};
+  if (def.is_vertex) {
+    p.xy = {p.approx.xyz[ax], p.approx.xyz[ay]};
+  } else if (CGAL::certainly(p.approx.w > 0)) {
+    p.xy = {p.approx.xyz[ax] / p.approx.w, p.approx.xyz[ay] / p.approx.w};
+  } else {
+    p.xy = {Interval::largest(), Interval::largest()};
+  }
+  return p;
+}
 
 struct Projection {
   glm::dvec3 origin{};
@@ -204,6 +222,49 @@ NT det3(const Homogeneous<NT>& a, const Homogeneous<NT>& b,
          a.w * (xb * yc - yb * xc);
 }
 
+// The incircle determinant of four points in homogeneous coordinates, each
+// row (x w, y w, x² + y², w²): Shewchuk's incircle with each row scaled by
+// w² > 0, positive if d lies inside the circle through a, b, c (in
+// counter-clockwise order).
+template <typename NT>
+NT incircle(const std::array<const Homogeneous<NT>*, 4>& p, int ax, int ay) {
+  std::array<std::array<NT, 4>, 4> m;
+  for (int i = 0; i < 4; ++i) {
+    const NT& x = p[i]->xyz[ax];
+    const NT& y = p[i]->xyz[ay];
+    const NT& w = p[i]->w;
+    m[i] = {x * w, y * w, x * x + y * y, w * w};
+  }
+  // Laplace expansion by the 2×2 minors of the first two rows.
+  const auto minor = [&](int r0, int r1, int c0, int c1) {
+    return m[r0][c0] * m[r1][c1] - m[r0][c1] * m[r1][c0];
+  };
+  return minor(0, 1, 0, 1) * minor(2, 3, 2, 3) -
+         minor(0, 1, 0, 2) * minor(2, 3, 1, 3) +
+         minor(0, 1, 0, 3) * minor(2, 3, 1, 2) +
+         minor(0, 1, 1, 2) * minor(2, 3, 0, 3) -
+         minor(0, 1, 1, 3) * minor(2, 3, 0, 2) +
+         minor(0, 1, 2, 3) * minor(2, 3, 0, 1);
+}
+
+// Shewchuk's incircle on Cartesian coordinates (intervals).
+Interval incircle_cartesian(const std::array<Interval, 2>& a,
+                            const std::array<Interval, 2>& b,
+                            const std::array<Interval, 2>& c,
+                            const std::array<Interval, 2>& d) {
+  const Interval adx = a[0] - d[0];
+  const Interval ady = a[1] - d[1];
+  const Interval bdx = b[0] - d[0];
+  const Interval bdy = b[1] - d[1];
+  const Interval cdx = c[0] - d[0];
+  const Interval cdy = c[1] - d[1];
+  const Interval al = adx * adx + ady * ady;
+  const Interval bl = bdx * bdx + bdy * bdy;
+  const Interval cl = cdx * cdx + cdy * cdy;
+  return adx * (bdy * cl - bl * cdy) - ady * (bdx * cl - bl * cdx) +
+         al * (bdx * cdy - bdy * cdx);
+}
+
 template <typename NT>
 NT cross_coordinate(const Homogeneous<NT>& a, const Homogeneous<NT>& b,
                     int axis) {
@@ -216,6 +277,11 @@ struct Traits {
   struct Point_2 {
     const FacePoint* p = nullptr;
   };
+  // A point's exact homogeneous coordinates, for what the intervals left.
+  static Homogeneous<CGAL::Mpzf> exact(const Point_2& point,
+                                       const Projection* proj) {
+    return homogeneous<CGAL::Mpzf>(*point.p->def, proj->origin);
+  }
   struct Segment_2 {
     Point_2 a;
     Point_2 b;
@@ -234,16 +300,19 @@ struct Traits {
       ++proj->orient_calls;
       {
         CGAL::Protect_FPU_rounding<true> guard;
-        const CGAL::Uncertain<Sign> s = CGAL::sign(det3(
-            a.p->approx, b.p->approx, c.p->approx, proj->ax, proj->ay));
+        const auto& [ax, ay] = a.p->xy;
+        const auto& [bx, by] = b.p->xy;
+        const auto& [cx, cy] = c.p->xy;
+        const CGAL::Uncertain<Sign> s0 =
+            CGAL::sign((bx - ax) * (cy - ay) - (by - ay) * (cx - ax));
+        if (s0.is_certain()) return s0.make_certain();
+        const CGAL::Uncertain<Sign> s = CGAL::sign(
+            det3(a.p->approx, b.p->approx, c.p->approx, proj->ax, proj->ay));
         if (s.is_certain()) return s.make_certain();
       }
       ++proj->orient_exact;
-      using Exact = Homogeneous<CGAL::Mpzf>;
-      const Exact ea = homogeneous<CGAL::Mpzf>(*a.p->def, proj->origin);
-      const Exact eb = homogeneous<CGAL::Mpzf>(*b.p->def, proj->origin);
-      const Exact ec = homogeneous<CGAL::Mpzf>(*c.p->def, proj->origin);
-      return sign_of(det3(ea, eb, ec, proj->ax, proj->ay));
+      return sign_of(det3(exact(a, proj), exact(b, proj), exact(c, proj),
+                          proj->ax, proj->ay));
     }
   };
   // Compares the projected coordinate `axis` of two points.
@@ -255,13 +324,14 @@ struct Traits {
       const int axis = which == 0 ? proj->ax : proj->ay;
       {
         CGAL::Protect_FPU_rounding<true> guard;
+        const CGAL::Uncertain<Sign> s0 =
+            CGAL::sign(a.p->xy[which] - b.p->xy[which]);
+        if (s0.is_certain()) return s0.make_certain();
         const CGAL::Uncertain<Sign> s =
             CGAL::sign(cross_coordinate(a.p->approx, b.p->approx, axis));
         if (s.is_certain()) return s.make_certain();
       }
-      const auto ea = homogeneous<CGAL::Mpzf>(*a.p->def, proj->origin);
-      const auto eb = homogeneous<CGAL::Mpzf>(*b.p->def, proj->origin);
-      return sign_of(cross_coordinate(ea, eb, axis));
+      return sign_of(cross_coordinate(exact(a, proj), exact(b, proj), axis));
     }
   };
   using Compare_x_2 = Compare_axis;
@@ -285,9 +355,32 @@ struct Traits {
       return {a, b, c};
     }
   };
-  // A constrained triangulation asks none of these, but its base class
-  // names them.
-  struct Side_of_oriented_circle_2 {};
+  struct Side_of_oriented_circle_2 {
+    const Projection* proj;
+    CGAL::Oriented_side operator()(const Point_2& a, const Point_2& b,
+                                   const Point_2& c, const Point_2& d) const {
+      ++proj->orient_calls;
+      {
+        CGAL::Protect_FPU_rounding<true> guard;
+        const CGAL::Uncertain<Sign> s0 =
+            CGAL::sign(incircle_cartesian(a.p->xy, b.p->xy, c.p->xy, d.p->xy));
+        if (s0.is_certain()) return s0.make_certain();
+        const CGAL::Uncertain<Sign> s = CGAL::sign(incircle<Interval>(
+            {&a.p->approx, &b.p->approx, &c.p->approx, &d.p->approx}, proj->ax,
+            proj->ay));
+        if (s.is_certain()) return s.make_certain();
+      }
+      ++proj->orient_exact;
+      const auto ea = exact(a, proj);
+      const auto eb = exact(b, proj);
+      const auto ec = exact(c, proj);
+      const auto ed = exact(d, proj);
+      return sign_of(
+          incircle<CGAL::Mpzf>({&ea, &eb, &ec, &ed}, proj->ax, proj->ay));
+    }
+  };
+  // A constrained Delaunay triangulation asks none of these, but its base
+  // class names them.
   struct Construct_circumcenter_2 {};
   struct Compute_squared_distance_2 {};
   struct Construct_point_2 {
@@ -303,6 +396,9 @@ struct Traits {
   Construct_segment_2 construct_segment_2_object() const { return {}; }
   Construct_triangle_2 construct_triangle_2_object() const { return {}; }
   Construct_point_2 construct_point_2_object() const { return {}; }
+  Side_of_oriented_circle_2 side_of_oriented_circle_2_object() const {
+    return {proj_};
+  }
 
  private:
   const Projection* proj_;
@@ -312,9 +408,8 @@ using Vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, Traits>;
 using Fb = CGAL::Triangulation_face_base_with_info_2<
     int, Traits, CGAL::Constrained_triangulation_face_base_2<Traits>>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
-using Triangulation =
-    CGAL::Constrained_triangulation_2<Traits, Tds,
-                                      CGAL::No_constraint_intersection_tag>;
+using Triangulation = CGAL::Constrained_Delaunay_triangulation_2<
+    Traits, Tds, CGAL::No_constraint_intersection_requiring_constructions_tag>;
 
 // What a cut face keeps, and what it tells its uncut neighbours.
 struct CutFaceResult {
@@ -324,6 +419,14 @@ struct CutFaceResult {
   std::array<int, 3> edge_inside{-1, -1, -1};
   std::uint64_t orient_calls = 0;
   std::uint64_t orient_exact = 0;
+};
+
+// A face of the union, and whether it lies where the operands meet (a piece
+// of a cut face, or a face whose box meets the other operand's box): the
+// only faces that rounding the new points can make intersect.
+struct KeptFace {
+  std::array<std::uint32_t, 3> corners;
+  bool near_contact = false;
 };
 
 struct CutFace {
@@ -342,19 +445,21 @@ class Engine {
     try {
       find_segments();
       number_crossings();
-      std::array<std::vector<std::uint8_t>, 2> inside;
-      std::array<std::vector<std::array<std::uint32_t, 3>>, 2> kept;
-      for (int m = 0; m < 2; ++m) classify(m, inside[m], kept[m]);
-      result.mesh = assemble(kept, result.first_new);
+      std::array<std::vector<KeptFace>, 2> kept;
+      for (int m = 0; m < 2; ++m) classify(m, kept[m]);
+      result.mesh = assemble(kept, result.first_new, result.contact_faces);
     } catch (const Failure& f) {
       result.failure = f.what;
       result.degenerate = f.degenerate;
+    } catch (const Triangulation::Intersection_of_constraints_exception&) {
+      result.failure = "two cuts cross in a face";
+      result.degenerate = true;
     } catch (const CGAL::Failure_exception& e) {
       // A constraint crossing another one: two faces of one operand meet
       // the other's face in segments that cross, which a valid operand
       // cannot do unless something touches.
-      result.failure = std::string("the triangulation of a cut face: ") +
-                       e.what();
+      result.failure =
+          std::string("the triangulation of a cut face: ") + e.what();
       result.degenerate = true;
     }
     result.counters = counters_;
@@ -434,7 +539,8 @@ class Engine {
     // one edge are neighbours in the sorted order.
     for (std::size_t i = 0; i < crossings_.size();) {
       std::size_t j = i + 1;
-      while (j < crossings_.size() && crossings_[j].mesh == crossings_[i].mesh &&
+      while (j < crossings_.size() &&
+             crossings_[j].mesh == crossings_[i].mesh &&
              crossings_[j].e0 == crossings_[i].e0 &&
              crossings_[j].e1 == crossings_[i].e1) {
         ++j;
@@ -443,9 +549,10 @@ class Engine {
       for (std::size_t k = i; k < j; ++k)
         run.push_back(static_cast<std::uint32_t>(k));
       if (run.size() > 1) {
-        std::sort(run.begin(), run.end(), [&](std::uint32_t x, std::uint32_t y) {
-          return along_edge(x, y) == CGAL::SMALLER;
-        });
+        std::sort(run.begin(), run.end(),
+                  [&](std::uint32_t x, std::uint32_t y) {
+                    return along_edge(x, y) == CGAL::SMALLER;
+                  });
       }
       const Crossing& c = crossings_[i];
       edge_points_[c.mesh][edge_key(c.e0, c.e1)] = std::move(run);
@@ -454,8 +561,7 @@ class Engine {
   }
 
   static std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-    return (static_cast<std::uint64_t>(std::min(a, b)) << 32U) |
-           std::max(a, b);
+    return (static_cast<std::uint64_t>(std::min(a, b)) << 32U) | std::max(a, b);
   }
 
   std::uint32_t id_of(const Crossing& c) const {
@@ -477,7 +583,8 @@ class Engine {
     const auto [nx, dx] = edge_parameter<CGAL::Mpzf>(points_[x]);
     const auto [ny, dy] = edge_parameter<CGAL::Mpzf>(points_[y]);
     const Sign s = sign_of(nx * dy - ny * dx);
-    if (s == CGAL::ZERO) throw Failure{"two crossings of an edge coincide", true};
+    if (s == CGAL::ZERO)
+      throw Failure{"two crossings of an edge coincide", true};
     return s;
   }
 
@@ -507,10 +614,10 @@ class Engine {
     // The exact sign of the normal's coordinate along the axis, from the
     // projected triangle's orientation.
     const auto other = [&](int k) { return (axis + k) % 3; };
-    const CGAL::Orientation o = CGAL::orientation(
-        K::Point_2(c[0][other(1)], c[0][other(2)]),
-        K::Point_2(c[1][other(1)], c[1][other(2)]),
-        K::Point_2(c[2][other(1)], c[2][other(2)]));
+    const CGAL::Orientation o =
+        CGAL::orientation(K::Point_2(c[0][other(1)], c[0][other(2)]),
+                          K::Point_2(c[1][other(1)], c[1][other(2)]),
+                          K::Point_2(c[2][other(1)], c[2][other(2)]));
     if (o == CGAL::COLLINEAR) throw Failure{"a degenerate face"};
     proj.ax = o == CGAL::POSITIVE ? other(1) : other(2);
     proj.ay = o == CGAL::POSITIVE ? other(2) : other(1);
@@ -527,7 +634,7 @@ class Engine {
       CGAL::Protect_FPU_rounding<true> guard;
       const auto add = [&](std::uint32_t id) {
         const ImplicitPoint& d = def_of(id);
-        pts.push_back(FacePoint{&d, id, homogeneous<Interval>(d, proj.origin)});
+        pts.push_back(face_point(d, id, proj.origin, proj.ax, proj.ay));
       };
       for (int i = 0; i < 3; ++i) add(ops_[m].offset + t[i]);
       for (int i = 0; i < 3; ++i) {
@@ -552,6 +659,11 @@ class Engine {
       corner[i]->info() = pts[i].id;
       handle[pts[i].id] = corner[i];
     }
+    // The face's edges are constraints, so that no flip asks about points
+    // on one of them (collinear, a known answer) and points inserted on
+    // them split them.
+    for (int i = 0; i < 3; ++i)
+      tr.insert_constraint(corner[i], corner[(i + 1) % 3]);
     std::size_t k = 3;
     for (int i = 0; i < 3; ++i) {
       const std::uint32_t u = t[i];
@@ -649,8 +761,7 @@ class Engine {
     return out;
   }
 
-  void classify(int m, std::vector<std::uint8_t>& inside,
-                std::vector<std::array<std::uint32_t, 3>>& kept) {
+  void classify(int m, std::vector<KeptFace>& kept) {
     const TriangleMesh& mesh = *ops_[m].mesh;
     const auto nf = static_cast<std::uint32_t>(mesh.triangles.size());
     std::unordered_map<std::uint32_t, CutFace> cut;
@@ -703,7 +814,7 @@ class Engine {
       filters_.orient_2d.fetch_add(r.orient_calls, std::memory_order_relaxed);
       filters_.orient_2d_exact.fetch_add(r.orient_exact,
                                          std::memory_order_relaxed);
-      for (const auto& tri : r.kept) kept.push_back(tri);
+      for (const auto& tri : r.kept) kept.push_back({tri, true});
       for (int i = 0; i < 3; ++i) {
         if (r.edge_inside[i] < 0) continue;
         const std::uint32_t g = neighbour(f, i);
@@ -722,16 +833,15 @@ class Engine {
         throw Failure{"a surface is both inside and outside"};
       side[r] = seed[f];
     }
-    inside.assign(nf, 0);
     for (std::uint32_t f = 0; f < nf; ++f) {
       if (is_cut[f]) continue;
       const std::uint32_t r = surfaces.find(f);
       if (side[r] < 0) side[r] = inside_other(m, mesh.triangles[f][0]) ? 1 : 0;
-      inside[f] = static_cast<std::uint8_t>(side[r]);
       if (side[r] == 0) {
         const auto& t = mesh.triangles[f];
-        kept.push_back({ops_[m].offset + t[0], ops_[m].offset + t[1],
-                        ops_[m].offset + t[2]});
+        kept.push_back({{ops_[m].offset + t[0], ops_[m].offset + t[1],
+                         ops_[m].offset + t[2]},
+                        face_box_overlaps_[m][f] != 0});
       }
     }
   }
@@ -762,15 +872,15 @@ class Engine {
 
   // The kept triangles over the points they use: first the operands'
   // vertices in order, then the new points, rounded to doubles.
-  TriangleMesh assemble(
-      const std::array<std::vector<std::array<std::uint32_t, 3>>, 2>& kept,
-      std::size_t& first_new) {
+  TriangleMesh assemble(const std::array<std::vector<KeptFace>, 2>& kept,
+                        std::size_t& first_new,
+                        std::vector<std::uint32_t>& contact_faces) {
     const std::uint32_t total =
         first_new_ + static_cast<std::uint32_t>(points_.size());
     std::vector<std::uint32_t> index(total, UINT32_MAX);
     for (const auto& list : kept)
-      for (const auto& t : list)
-        for (const std::uint32_t v : t) index[v] = 0;
+      for (const KeptFace& k : list)
+        for (const std::uint32_t v : k.corners) index[v] = 0;
     TriangleMesh out;
     bool any_new = false;
     for (std::uint32_t v = 0; v < total; ++v) {
@@ -787,8 +897,14 @@ class Engine {
     }
     if (!any_new) first_new = out.vertices.size();
     for (const auto& list : kept) {
-      for (const auto& t : list)
+      for (const KeptFace& k : list) {
+        if (k.near_contact) {
+          contact_faces.push_back(
+              static_cast<std::uint32_t>(out.triangles.size()));
+        }
+        const auto& t = k.corners;
         out.triangles.push_back({index[t[0]], index[t[1]], index[t[2]]});
+      }
     }
     return out;
   }
@@ -846,6 +962,42 @@ class Engine {
 };
 
 }  // namespace
+
+bool rounding_kept_valid(const PairUnion& u) {
+  const TriangleMesh& mesh = u.mesh;
+  const auto triangle = [&](std::uint32_t f) {
+    IndexedTriangle t;
+    t.ids = mesh.triangles[f];
+    for (int i = 0; i < 3; ++i) t.points[i] = mesh.vertices[t.ids[i]];
+    return t;
+  };
+  using Box =
+      CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::uint32_t>;
+  std::vector<Box> changed;
+  std::vector<Box> zone;
+  for (const std::uint32_t f : u.contact_faces) {
+    const IndexedTriangle t = triangle(f);
+    CGAL::Bbox_3 b;
+    for (const glm::dvec3& p : t.points) b += point3(p).bbox();
+    zone.emplace_back(b, f);
+    const auto& ids = t.ids;
+    if (ids[0] >= u.first_new || ids[1] >= u.first_new ||
+        ids[2] >= u.first_new) {
+      if (is_degenerate(t)) return false;
+      changed.emplace_back(b, f);
+    }
+  }
+  bool ok = true;
+  CGAL::box_intersection_d(
+      changed.begin(), changed.end(), zone.begin(), zone.end(),
+      [&](const Box& a, const Box& b) {
+        if (ok && a.info() != b.info() &&
+            triangles_intersect(triangle(a.info()), triangle(b.info()))) {
+          ok = false;
+        }
+      });
+  return ok;
+}
 
 PairUnion unite_pair(const TriangleMesh& a, const TriangleMesh& b,
                      FilterCounters& filters) {

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "lsolid/mesh.hpp"
 
@@ -21,9 +22,9 @@ struct FilterCounters {
 
 /// What one union of two operands found and asked.
 struct PairCounters {
-  std::size_t face_pairs = 0;  ///< pairs of faces whose boxes meet
-  std::size_t crossings = 0;   ///< edge–face crossings, each decided once
-  std::size_t cut_faces = 0;   ///< faces triangulated again
+  std::size_t face_pairs = 0;    ///< pairs of faces whose boxes meet
+  std::size_t crossings = 0;     ///< edge–face crossings, each decided once
+  std::size_t cut_faces = 0;     ///< faces triangulated again
   std::size_t inside_tests = 0;  ///< surfaces no crossing touches, tested
 };
 
@@ -34,6 +35,10 @@ struct PairCounters {
 struct PairUnion {
   TriangleMesh mesh;
   std::size_t first_new = 0;
+  /// The faces where the operands meet (pieces of cut faces, faces whose
+  /// boxes meet the other operand's box): rounding can only make these
+  /// intersect.
+  std::vector<std::uint32_t> contact_faces;
   bool degenerate = false;
   std::string failure;
   PairCounters counters;
@@ -45,6 +50,11 @@ struct PairUnion {
 /// (docs/design.md, "The exact union engine").
 /// @pre both are closed, outward-oriented 2-manifolds without
 ///   self-intersections, with double coordinates.
+/// Whether rounding the new points kept the union free of degenerate and
+/// intersecting faces (exact predicates on the rounded coordinates; only
+/// faces in `u.contact_faces` can have changed or be met).
+[[nodiscard]] bool rounding_kept_valid(const PairUnion& u);
+
 [[nodiscard]] PairUnion unite_pair(const TriangleMesh& a, const TriangleMesh& b,
                                    FilterCounters& filters);
 

@@ -16,8 +16,8 @@ namespace lsolid::exact_union {
 /// definition and never constructed (Attene 2020, "Indirect predicates for
 /// geometric constructions").
 struct ImplicitPoint {
-  glm::dvec3 p{};  ///< the vertex, or the edge's first end
-  glm::dvec3 q{};  ///< the edge's second end (an LPI)
+  glm::dvec3 p{};                     ///< the vertex, or the edge's first end
+  glm::dvec3 q{};                     ///< the edge's second end (an LPI)
   std::array<glm::dvec3, 3> plane{};  ///< the face (an LPI)
   bool is_vertex = true;
   /// p lies on the plane's negative side (an LPI): decided once, exactly,

@@ -64,11 +64,12 @@ void print_report(const SolidReport& r, bool united) {
         r.cavities_filled, r.witnesses_checked);
     if (u.engine == UnionEngine::ExactCrossings) {
       fmt::print(
-          "union engine: exact, {} unions, {} where parts touch and {} "
-          "fallbacks left to the corefinement; {} crossings, {} faces cut; {} "
-          "predicates on implicit points, {} ({:.2f}%) evaluated exactly\n",
-          u.exact_unions, u.degenerate_unions, u.fallbacks, u.crossings,
-          u.cut_faces, u.predicates, u.filter_failures,
+          "union engine: exact, {} threads, {} unions, {} where parts touch "
+          "and {} fallbacks left to the corefinement; {} crossings, {} faces "
+          "cut; {} predicates on implicit points, {} ({:.2f}%) evaluated "
+          "exactly\n",
+          u.threads, u.exact_unions, u.degenerate_unions, u.fallbacks,
+          u.crossings, u.cut_faces, u.predicates, u.filter_failures,
           u.predicates == 0 ? 0.0
                             : 100.0 * static_cast<double>(u.filter_failures) /
                                   static_cast<double>(u.predicates));
@@ -289,6 +290,10 @@ void run_build(const BuildCommand& command) {
   options.interpretation = interpret_options(command.input);
   options.print = print_settings(grammar, command.print);
   options.unite = !command.no_union;
+  if (command.threads) {
+    options.threads = static_cast<int>(
+        parse_whole_number(*command.threads, "--threads", 1, 256));
+  }
   options.union_engine = command.union_engine == "corefine"
                              ? UnionEngine::Corefinement
                              : UnionEngine::ExactCrossings;

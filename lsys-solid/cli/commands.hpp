@@ -109,6 +109,7 @@ struct BuildCommand {
   bool ascii = false;
   bool no_union = false;
   std::string union_engine = "exact";  ///< `--union-engine`
+  std::optional<std::string> threads;  ///< `--threads`, as typed
   bool no_decimate = false;
   bool multi_material = false;  ///< one volume per colour (3MF, OBJ)
   std::optional<std::string> max_triangles;  ///< as typed

@@ -30,6 +30,7 @@ namespace {
 // What the union engine did, as the text report's `union engine:` line.
 Json union_engine_json(const UnionStats& u) {
   return Json{{"engine", engine_name(u.engine)},
+              {"threads", u.threads},
               {"exact_unions", u.exact_unions},
               {"degenerate_unions", u.degenerate_unions},
               {"degenerate_reason", u.degenerate_reason},

@@ -243,7 +243,8 @@ void unite_and_round(std::vector<Part> parts, UnionEngine engine,
                                if (options.expect)
                                  options.expect("union", seconds);
                              },
-                         .engine = engine});
+                         .engine = engine,
+                         .threads = options.threads});
   CavitiesFilled filled = fill_cavities(std::move(united.mesh));
   report.union_stats = united.stats;
   report.cavities_filled = filled.removed;

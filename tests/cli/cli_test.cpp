@@ -564,8 +564,9 @@ TEST_F(Build, SaysPlainlyWhenTheModelFallsApartAndCanRefuseIt) {
 }
 
 TEST_F(Build, WritesTheSameBytesEveryRun) {
-  // Two runs of one binary on one input: byte-identical STL, OFF, OBJ (and
-  // its MTL) and 3MF, whose UUIDs lib3mf would otherwise draw at random.
+  // Two runs of one binary on one input, on one thread and on two:
+  // byte-identical STL, OFF, OBJ (and its MTL) and 3MF, whose UUIDs lib3mf
+  // would otherwise draw at random.
   // A planar figure (cut flat), a tree with leaves, and a Koch curve whose
   // mitres break chains into joints left to the union.
   use_printable("abop-1.25-bush", "bush.ls");
@@ -579,7 +580,7 @@ TEST_F(Build, WritesTheSameBytesEveryRun) {
     std::filesystem::create_directory(dir_ / run);
   }
   const std::vector<std::pair<std::string, std::string>> builds = {
-      {"bush.ls -n 2", "bush"},
+      {"bush.ls -n 3", "bush"},
       {"plant.ls -n 2", "plant"},
       {"koch.ls -n 1", "koch"},
       {"bush.ls -n 1 --multi-material", "volumes"}};
@@ -588,9 +589,18 @@ TEST_F(Build, WritesTheSameBytesEveryRun) {
       const bool multi = name == "volumes";
       if (multi && std::string(ext) != ".3mf" && std::string(ext) != ".obj")
         continue;
+      // The first run on one thread, the second on two: the union's
+      // threads must not change a byte.
       for (const char* run : {"first", "second"}) {
-        const auto r = run_command(
-            lsolid() + " " + input + " -q -o " + run + "/" + name + ext, dir_);
+        std::string command = lsolid();
+        command += " ";
+        command += input;
+        command +=
+            std::string(run) == "first" ? " --threads 1" : " --threads 2";
+        command += " -q -o ";
+        command += run;
+        command += "/" + name + ext;
+        const auto r = run_command(command, dir_);
         ASSERT_EQ(r.exit_code, 0) << input << ext << ": " << r.err;
       }
       std::vector<std::string> files{name + ext};
@@ -610,9 +620,10 @@ TEST_F(Build, UnitesWithTheEngineAskedAndSaysWhatItDid) {
   const auto exact =
       run_command(lsolid() + " bush.ls -n 3 --no-decimate -o e.off", dir_);
   ASSERT_EQ(exact.exit_code, 0) << exact.err;
-  const std::regex line(R"(\nunion engine: exact, (\d+) unions, (\d+) where )"
-                        R"(parts touch and 0 fallbacks left to the )"
-                        R"(corefinement; (\d+) crossings)");
+  const std::regex line(
+      R"(\nunion engine: exact, \d+ threads, (\d+) unions, (\d+) where )"
+      R"(parts touch and 0 fallbacks left to the )"
+      R"(corefinement; (\d+) crossings)");
   std::smatch m;
   ASSERT_TRUE(std::regex_search(exact.out, m, line)) << exact.out;
   EXPECT_GT(std::stoi(m[1]), 0);

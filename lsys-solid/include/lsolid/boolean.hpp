@@ -65,6 +65,7 @@ struct UnionStats {
   /// whose answer is known is being asked.
   std::uint64_t predicates = 0;
   std::uint64_t filter_failures = 0;
+  int threads = 1;  ///< the threads the union ran on
 };
 
 /// The union's time per contact (UnionStats::contacts) on the project's
@@ -89,6 +90,9 @@ struct UnionOptions {
   /// kUnionSecondsPerContact.
   std::function<void(double seconds)> expect;
   UnionEngine engine = UnionEngine::ExactCrossings;
+  /// The threads the exact engine may use; 0: as many as the machine has.
+  /// The result is the same, byte for byte, whatever the number.
+  int threads = 0;
 };
 
 /// Unions closed parts into one closed 2-manifold mesh with CGAL's

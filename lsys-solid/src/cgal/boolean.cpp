@@ -18,6 +18,8 @@
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/box_intersection_d.h>
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <array>
@@ -551,8 +553,19 @@ const char* engine_name(UnionEngine engine) {
 }
 
 UnionResult union_parts(std::vector<Part> parts, const UnionOptions& options) {
-  return Unioner(std::move(parts), options.progress, options.engine)
-      .run(options.expect);
+  std::optional<tbb::global_control> limit;
+  if (options.threads > 0) {
+    limit.emplace(tbb::global_control::max_allowed_parallelism,
+                  static_cast<std::size_t>(options.threads));
+  }
+  UnionResult result =
+      Unioner(std::move(parts), options.progress, options.engine)
+          .run(options.expect);
+  result.stats.threads = static_cast<int>(std::min<std::size_t>(
+      tbb::global_control::active_value(
+          tbb::global_control::max_allowed_parallelism),
+      static_cast<std::size_t>(tbb::this_task_arena::max_concurrency())));
+  return result;
 }
 
 TriangleMesh subtract(const TriangleMesh& a, const TriangleMesh& b) {

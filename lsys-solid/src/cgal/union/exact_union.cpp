@@ -25,6 +25,8 @@
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
 #include <mpfr.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
@@ -57,6 +59,26 @@ struct Failure {
   std::string what;
   bool degenerate = false;
 };
+
+// Runs body(begin, end, chunk) over [0, n) in chunks of fixed size on
+// oneTBB's threads, and rethrows the failure of the first chunk that failed:
+// each chunk writes only its own results, and which failure is reported does
+// not depend on how many threads ran, or in which order.
+template <typename Body>
+void for_each_chunk(std::size_t n, const Body& body) {
+  constexpr std::size_t kChunk = 256;
+  const std::size_t chunks = (n + kChunk - 1) / kChunk;
+  std::vector<std::optional<Failure>> failed(chunks);
+  tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
+    try {
+      body(c * kChunk, std::min(n, (c + 1) * kChunk), c);
+    } catch (const Failure& f) {
+      failed[c] = f;
+    }
+  });
+  for (const std::optional<Failure>& f : failed)
+    if (f) throw *f;
+}
 
 // An edge of one operand crossing a face of the other, in its canonical
 // form: the edge's ends in increasing order.
@@ -445,22 +467,16 @@ class Engine {
     try {
       find_segments();
       number_crossings();
+      make_vertex_points();
       std::array<std::vector<KeptFace>, 2> kept;
       for (int m = 0; m < 2; ++m) classify(m, kept[m]);
       result.mesh = assemble(kept, result.first_new, result.contact_faces);
     } catch (const Failure& f) {
       result.failure = f.what;
       result.degenerate = f.degenerate;
-    } catch (const Triangulation::Intersection_of_constraints_exception&) {
-      result.failure = "two cuts cross in a face";
-      result.degenerate = true;
     } catch (const CGAL::Failure_exception& e) {
-      // A constraint crossing another one: two faces of one operand meet
-      // the other's face in segments that cross, which a valid operand
-      // cannot do unless something touches.
-      result.failure =
-          std::string("the triangulation of a cut face: ") + e.what();
-      result.degenerate = true;
+      // A violated precondition of CGAL's (on as exceptions): a bug here.
+      result.failure = std::string("CGAL: ") + e.what();
     }
     result.counters = counters_;
     return result;
@@ -505,10 +521,18 @@ class Engine {
         std::ptrdiff_t(10), CGAL::Box_intersection_d::CLOSED);
     std::sort(pairs.begin(), pairs.end());
     counters_.face_pairs = pairs.size();
-    for (const auto& [fa, fb] : pairs) {
-      if (std::optional<Segment> s = cross_faces(ops_, fa, fb))
-        segments_.push_back(*s);
-    }
+    std::vector<std::vector<Segment>> found((pairs.size() + 255) / 256);
+    for_each_chunk(pairs.size(),
+                   [&](std::size_t begin, std::size_t end, std::size_t chunk) {
+                     for (std::size_t i = begin; i < end; ++i) {
+                       if (std::optional<Segment> s = cross_faces(
+                               ops_, pairs[i].first, pairs[i].second)) {
+                         found[chunk].push_back(*s);
+                       }
+                     }
+                   });
+    for (const std::vector<Segment>& list : found)
+      segments_.insert(segments_.end(), list.begin(), list.end());
   }
 
   void number_crossings() {
@@ -588,14 +612,14 @@ class Engine {
     return s;
   }
 
-  const ImplicitPoint& vertex_point(int m, std::uint32_t v) {
-    auto& table = vertex_points_[m];
-    if (table.empty()) {
+  // The operands' vertices as implicit points, for the triangulations.
+  void make_vertex_points() {
+    for (int m = 0; m < 2; ++m) {
+      auto& table = vertex_points_[m];
       table.resize(ops_[m].mesh->vertices.size());
       for (std::size_t i = 0; i < table.size(); ++i)
         table[i].p = ops_[m].mesh->vertices[i];
     }
-    return table[v];
   }
 
   // Triangulates face f of operand m with its crossings, and keeps the
@@ -628,7 +652,7 @@ class Engine {
     const auto def_of = [&](std::uint32_t id) -> const ImplicitPoint& {
       if (id >= first_new_) return points_[id - first_new_];
       const int mm = id >= ops_[1].offset ? 1 : 0;
-      return vertex_point(mm, id - ops_[mm].offset);
+      return vertex_points_[mm][id - ops_[mm].offset];
     };
     {
       CGAL::Protect_FPU_rounding<true> guard;
@@ -809,8 +833,25 @@ class Engine {
         if (!is_cut[g]) surfaces.join(f, g);
       }
     }
-    for (const std::uint32_t f : cut_faces) {
-      CutFaceResult r = triangulate(m, f, cut.at(f));
+    std::vector<CutFaceResult> results(cut_faces.size());
+    for_each_chunk(cut_faces.size(), [&](std::size_t begin, std::size_t end,
+                                         std::size_t) {
+      for (std::size_t i = begin; i < end; ++i) {
+        try {
+          results[i] = triangulate(m, cut_faces[i], cut.at(cut_faces[i]));
+        } catch (const Triangulation::Intersection_of_constraints_exception&) {
+          // Two faces of one operand meet the other's face in segments that
+          // cross: they touch there.
+          throw Failure{"two cuts cross in a face", true};
+        } catch (const CGAL::Failure_exception& e) {
+          throw Failure{std::string("the triangulation of a cut face: ") +
+                        e.what()};
+        }
+      }
+    });
+    for (std::size_t k = 0; k < cut_faces.size(); ++k) {
+      const std::uint32_t f = cut_faces[k];
+      const CutFaceResult& r = results[k];
       filters_.orient_2d.fetch_add(r.orient_calls, std::memory_order_relaxed);
       filters_.orient_2d_exact.fetch_add(r.orient_exact,
                                          std::memory_order_relaxed);
@@ -987,15 +1028,23 @@ bool rounding_kept_valid(const PairUnion& u) {
       changed.emplace_back(b, f);
     }
   }
-  bool ok = true;
-  CGAL::box_intersection_d(
-      changed.begin(), changed.end(), zone.begin(), zone.end(),
-      [&](const Box& a, const Box& b) {
-        if (ok && a.info() != b.info() &&
-            triangles_intersect(triangle(a.info()), triangle(b.info()))) {
-          ok = false;
-        }
-      });
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  CGAL::box_intersection_d(changed.begin(), changed.end(), zone.begin(),
+                           zone.end(), [&](const Box& a, const Box& b) {
+                             if (a.info() != b.info())
+                               pairs.emplace_back(a.info(), b.info());
+                           });
+  std::atomic<bool> ok{true};
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs.size(), 256),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t i = range.begin(); i < range.end() && ok;
+                           ++i) {
+                        if (triangles_intersect(triangle(pairs[i].first),
+                                                triangle(pairs[i].second))) {
+                          ok = false;
+                        }
+                      }
+                    });
   return ok;
 }
 

@@ -14,6 +14,8 @@
 
 #include <CGAL/intersections.h>
 
+#include <cmath>
+
 namespace lsolid {
 namespace {
 
@@ -68,12 +70,33 @@ bool triangles_intersect(const IndexedTriangle& a, const IndexedTriangle& b) {
                                 Triangle(q[0], q[1], q[2])) ||
              CGAL::do_intersect(Segment(q[1], q[2]),
                                 Triangle(p[0], p[1], p[2]));
-    case 2:
+    case 2: {
       // p[0], p[1] are the shared edge's ends; p[2] and q[2] the corners
-      // opposite. Only a fold onto each other overlaps.
+      // opposite. Only a fold onto each other overlaps. Neighbours in one
+      // flat region are nearly coplanar, where the coplanarity test needs
+      // exact arithmetic: first, if the corners lie strictly on opposite
+      // sides of the edge seen along the axis the triangle faces most, the
+      // two cannot fold onto each other (coplanar or not).
+      const auto n = CGAL::cross_product(p[1] - p[0], p[2] - p[0]);
+      const double ax = std::abs(n.x());
+      const double ay = std::abs(n.y());
+      const double az = std::abs(n.z());
+      const int axis = ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2);
+      const auto side = [&](const Point& c) {
+        const auto project = [&](const Point& x) {
+          return Inexact::Point_2(x[(axis + 1) % 3], x[(axis + 2) % 3]);
+        };
+        return CGAL::orientation(project(p[0]), project(p[1]), project(c));
+      };
+      const CGAL::Orientation sp = side(p[2]);
+      const CGAL::Orientation sq = side(q[2]);
+      if (sp != CGAL::COLLINEAR && sq != CGAL::COLLINEAR && sp != sq) {
+        return false;
+      }
       return CGAL::coplanar(p[0], p[1], p[2], q[2]) &&
              CGAL::coplanar_orientation(p[0], p[1], p[2], q[2]) ==
                  CGAL::POSITIVE;
+    }
     default:
       return true;
   }

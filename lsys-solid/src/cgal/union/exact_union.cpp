@@ -1012,28 +1012,32 @@ bool rounding_kept_valid(const PairUnion& u) {
     for (int i = 0; i < 3; ++i) t.points[i] = mesh.vertices[t.ids[i]];
     return t;
   };
-  using Box =
-      CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::uint32_t>;
+  // Boxes with explicit ids: the self-intersection copies them.
+  using Box = CGAL::Box_intersection_d::Box_with_info_d<
+      double, 3, std::uint32_t, CGAL::Box_intersection_d::ID_EXPLICIT>;
   std::vector<Box> changed;
-  std::vector<Box> zone;
+  std::vector<Box> unchanged;
   for (const std::uint32_t f : u.contact_faces) {
     const IndexedTriangle t = triangle(f);
     CGAL::Bbox_3 b;
     for (const glm::dvec3& p : t.points) b += point3(p).bbox();
-    zone.emplace_back(b, f);
     const auto& ids = t.ids;
     if (ids[0] >= u.first_new || ids[1] >= u.first_new ||
         ids[2] >= u.first_new) {
       if (is_degenerate(t)) return false;
       changed.emplace_back(b, f);
+    } else {
+      unchanged.emplace_back(b, f);
     }
   }
+  // Each pair once: changed faces among themselves, then against the rest.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  CGAL::box_intersection_d(changed.begin(), changed.end(), zone.begin(),
-                           zone.end(), [&](const Box& a, const Box& b) {
-                             if (a.info() != b.info())
-                               pairs.emplace_back(a.info(), b.info());
-                           });
+  const auto add = [&](const Box& a, const Box& b) {
+    pairs.emplace_back(a.info(), b.info());
+  };
+  CGAL::box_self_intersection_d(changed.begin(), changed.end(), add);
+  CGAL::box_intersection_d(changed.begin(), changed.end(), unchanged.begin(),
+                           unchanged.end(), add);
   std::atomic<bool> ok{true};
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs.size(), 256),
                     [&](const tbb::blocked_range<std::size_t>& range) {

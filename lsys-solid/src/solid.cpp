@@ -224,14 +224,10 @@ void decimate_and_check(TriangleMesh& mesh, const PartsKept& kept,
   tell("check", 1.0);
 }
 
-// The union of the parts, rounded to the file's precision, its underside
-// cut flat if it lies flat (the cut after the union: cut part by part, the
-// coplanar caps made the union three times as slow on ABOP fig. 1.24a, and
-// the union of the caps three times the triangles), decimated where that
-// stays printable, and its check, into `mesh` and `report`.
 // The union of the parts with `engine`, rounded to the file's precision,
 // its cavities filled, and checked to keep the parts (check_union_kept).
-// @throws GeometryError as union_parts and check_union_kept.
+// @throws GeometryError as union_parts and check_union_kept, and when the
+//   exact engine's union does not round clean.
 void unite_and_round(std::vector<Part> parts, UnionEngine engine,
                      const PartsKept& kept, const SolidOptions& options,
                      SolidReport& report, TriangleMesh& mesh, Stopwatch& clock,
@@ -251,6 +247,13 @@ void unite_and_round(std::vector<Part> parts, UnionEngine engine,
   report.seconds.unite += clock.lap();
   tell("rounding", 0.0);
   Rounded rounded = round_for_output(filled.mesh, options, report.warnings);
+  // The exact engine's union must round clean, or it is done again by the
+  // corefinement (unite_and_finish): a result the repairs could not finish
+  // is never handed on as the engine's.
+  if (engine == UnionEngine::ExactCrossings && !rounded.clean) {
+    throw GeometryError(
+        "rounding left degenerate or intersecting faces it could not mend");
+  }
   report.rounding = {};
   accumulate(report.rounding, rounded.stats);
   filled = fill_cavities(std::move(rounded.mesh));
@@ -504,11 +507,6 @@ std::optional<std::string> fills_its_box(const SolidReport& report,
       100.0 * fill, v.volume_mm3 / 1000.0, wall_mm);
 }
 
-// Fitting a model to its size shrinks its drawing with its widths: a width
-// thousands of times the drawing's extent (`!(1e200)F`, a thickness of
-// 1e308) shrinks the segments below what the tubes can be built from (at
-// a ratio of a million a union lost a part; at 1e200 the tubes are no
-// solids). Such a model is a lump at best: refuse the width at its place.
 // The longest side of what the skeleton draws, tube widths not counted; not
 // above 0 when it draws nothing or a point.
 double drawing_extent(const lsys::Skeleton& skeleton) {
@@ -516,6 +514,11 @@ double drawing_extent(const lsys::Skeleton& skeleton) {
   return std::max({size.x, size.y, size.z});
 }
 
+// Fitting a model to its size shrinks its drawing with its widths: a width
+// thousands of times the drawing's extent (`!(1e200)F`, a thickness of
+// 1e308) shrinks the segments below what the tubes can be built from (at
+// a ratio of a million a union lost a part; at 1e200 the tubes are no
+// solids). Such a model is a lump at best: refuse the width at its place.
 void refuse_widths_that_dwarf_the_drawing(const lsys::Grammar& grammar,
                                           const lsys::Skeleton& skeleton) {
   constexpr double kMostRatio = 1e4;

@@ -100,17 +100,9 @@ std::uint32_t morton(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
   return spread(x) | (spread(y) << 1U) | (spread(z) << 2U);
 }
 
-// The vertices a union created are lazy exact points whose exact values
-// (rationals) grow with every level of the reduction; most of the union's
-// time went into GMP for them. Where rounding them to doubles provably keeps
-// the mesh valid (no face near them becomes degenerate or intersecting,
-// tested with exact predicates on the rounded coordinates), they are
-// rounded, and the next union starts from doubles again. Where it would not,
-// the exact points stay. Returns true if the points were rounded.
-// Whether a mesh whose new points were just rounded is still a closed
-// 2-manifold without degenerate or intersecting faces near them (`near_new`:
-// the faces that touch a new point); only faces whose boxes meet those can
-// have changed.
+// Whether a mesh whose new points were just rounded is still free of
+// degenerate and intersecting faces near them (`near_new`: the faces that
+// touch a new point); only faces whose boxes meet those can have changed.
 bool valid_near(const InexactMesh& rounded,
                 const std::vector<InexactMesh::Face_index>& near_new) {
   using Face = InexactMesh::Face_index;
@@ -132,6 +124,13 @@ bool valid_near(const InexactMesh& rounded,
   return !PMP::does_self_intersect(range, rounded);
 }
 
+// The vertices a union created are lazy exact points whose exact values
+// (rationals) grow with every level of the reduction; most of the union's
+// time went into GMP for them. Where rounding them to doubles provably keeps
+// the mesh valid (no face near them becomes degenerate or intersecting,
+// tested with exact predicates on the rounded coordinates), they are
+// rounded, and the next union starts from doubles again. Where it would not,
+// the exact points stay. Returns true if the points were rounded.
 bool round_new_points(ExactMesh& mesh) {
   using Face = InexactMesh::Face_index;
   std::vector<bool> is_new(mesh.number_of_vertices(), false);
@@ -366,12 +365,15 @@ class Unioner {
       return std::nullopt;
     }
     if (!round_points) return std::move(u.mesh);
+    std::optional<TriangleMesh> out = exact_union::rounding_kept_valid(u)
+                                          ? std::move(u.mesh)
+                                          : mended(u.mesh);
+    if (!out) {
+      last_failure_ = "its new points could not be rounded to doubles";
+      return std::nullopt;
+    }
     ++stats_.rounded;
-    if (exact_union::rounding_kept_valid(u)) return std::move(u.mesh);
-    if (std::optional<TriangleMesh> m = mended(u.mesh)) return m;
-    --stats_.rounded;
-    last_failure_ = "its new points could not be rounded to doubles";
-    return std::nullopt;
+    return out;
   }
 
   Group merge(Group a, Group b, bool round_points) {
@@ -392,18 +394,13 @@ class Unioner {
       // A degeneracy (faces that touch, a vertex on a face) goes to the
       // corefinement, which handles coplanar faces exactly; a shift, which
       // the exact engine could use, would move the result by 10⁻⁵ mm.
-      if (degenerate_) {
-        ++stats_.degenerate_unions;
-        if (stats_.degenerate_reason.empty()) {
-          stats_.degenerate_reason = "the union of " + describe(a) + " with " +
-                                     describe(b) + ": " + last_failure_;
-        }
-      } else {
-        ++stats_.fallbacks;
-        if (stats_.fallback_reason.empty()) {
-          stats_.fallback_reason = "the union of " + describe(a) + " with " +
-                                   describe(b) + ": " + last_failure_;
-        }
+      std::size_t& count =
+          degenerate_ ? stats_.degenerate_unions : stats_.fallbacks;
+      std::string& reason =
+          degenerate_ ? stats_.degenerate_reason : stats_.fallback_reason;
+      if (count++ == 0) {
+        reason = "the union of " + describe(a) + " with " + describe(b) + ": " +
+                 last_failure_;
       }
     }
     for (int attempt = 0; attempt < kAttempts; ++attempt) {

@@ -17,9 +17,7 @@
 #include "cgal/union/exact_union.hpp"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Side_of_triangle_mesh.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/box_intersection_d.h>
@@ -39,14 +37,17 @@
 #include <utility>
 #include <vector>
 
+#include "cgal/conversion.hpp"
+#include "cgal/kernel.hpp"
 #include "cgal/triangle_pair.hpp"
 #include "cgal/union/implicit_point.hpp"
+#include "shells.hpp"
 #include "union_find.hpp"
 
 namespace lsolid::exact_union {
 namespace {
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using K = Inexact;  // kernel.hpp
 using Point3 = K::Point_3;
 using Interval = CGAL::Interval_nt<false>;
 using Sign = CGAL::Sign;
@@ -584,10 +585,6 @@ class Engine {
     }
   }
 
-  static std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
-    return (static_cast<std::uint64_t>(std::min(a, b)) << 32U) | std::max(a, b);
-  }
-
   std::uint32_t id_of(const Crossing& c) const {
     const auto it = std::lower_bound(crossings_.begin(), crossings_.end(), c);
     return first_new_ + static_cast<std::uint32_t>(it - crossings_.begin());
@@ -730,11 +727,13 @@ class Engine {
     // Inside or outside, from the directed constraints, spread over the
     // face across edges that no constraint holds.
     const bool left_is_inside = m == 0;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> forward = cut.segments;
+    std::sort(forward.begin(), forward.end());
     const auto directed = [&](std::uint32_t a, std::uint32_t b) {
-      for (const auto& s : cut.segments) {
-        if (s.first == a && s.second == b) return 1;
-        if (s.first == b && s.second == a) return -1;
-      }
+      if (std::binary_search(forward.begin(), forward.end(), std::pair(a, b)))
+        return 1;
+      if (std::binary_search(forward.begin(), forward.end(), std::pair(b, a)))
+        return -1;
       return 0;
     };
     const auto set_status = [](Triangulation::Face_handle fh, int inside) {
@@ -894,15 +893,13 @@ class Engine {
     ++counters_.inside_tests;
     const int o = 1 - m;
     if (!side_of_[o]) {
-      const TriangleMesh& mesh = *ops_[o].mesh;
-      surface_[o] = std::make_unique<CGAL::Surface_mesh<Point3>>();
-      auto& sm = *surface_[o];
-      for (const glm::dvec3& p : mesh.vertices) sm.add_vertex(point3(p));
-      using VI = CGAL::Surface_mesh<Point3>::Vertex_index;
-      for (const auto& t : mesh.triangles)
-        sm.add_face(VI(t[0]), VI(t[1]), VI(t[2]));
-      side_of_[o] = std::make_unique<
-          CGAL::Side_of_triangle_mesh<CGAL::Surface_mesh<Point3>, K>>(sm);
+      std::optional<InexactMesh> surface =
+          to_surface_mesh<InexactMesh>(*ops_[o].mesh);
+      if (!surface) throw Failure{"an operand is not a 2-manifold"};
+      surface_[o] = std::make_unique<InexactMesh>(std::move(*surface));
+      side_of_[o] =
+          std::make_unique<CGAL::Side_of_triangle_mesh<InexactMesh, K>>(
+              *surface_[o]);
     }
     const CGAL::Bounded_side s =
         (*side_of_[o])(point3(ops_[m].mesh->vertices[v]));
@@ -995,10 +992,8 @@ class Engine {
   std::array<std::unordered_map<std::uint64_t, std::vector<std::uint32_t>>, 2>
       edge_points_;
   std::array<std::vector<ImplicitPoint>, 2> vertex_points_;
-  std::array<std::unique_ptr<CGAL::Surface_mesh<Point3>>, 2> surface_;
-  std::array<std::unique_ptr<
-                 CGAL::Side_of_triangle_mesh<CGAL::Surface_mesh<Point3>, K>>,
-             2>
+  std::array<std::unique_ptr<InexactMesh>, 2> surface_;
+  std::array<std::unique_ptr<CGAL::Side_of_triangle_mesh<InexactMesh, K>>, 2>
       side_of_;
 };
 

@@ -101,6 +101,29 @@ BENCHMARK_CAPTURE(build, bush_n5_multi_material, "abop-1.25-bush.ls", 5, true)
     ->Unit(benchmark::kSecond)
     ->Iterations(1);
 
+// Decimation alone, of a model's union built once without it: the stage
+// that took half of the bush's build at n = 7.
+void decimate_union(benchmark::State& state, const std::string& file, int n) {
+  const lsolid::Solid united = lsolid::build_solid(
+      load(file), {.derivation = {.derivation_length = n}, .decimate = false});
+  lsolid::Decimated out;
+  for (auto _ : state) out = lsolid::decimate(united.mesh);
+  if (!out.refused.empty()) state.SkipWithError(out.refused.c_str());
+  state.counters["triangles_before"] =
+      static_cast<double>(out.stats.triangles_before);
+  state.counters["triangles_after"] =
+      static_cast<double>(out.stats.triangles_after);
+  state.counters["deviation_mm"] = out.stats.max_deviation_mm;
+  state.counters["attempts"] = out.stats.attempts;
+}
+
+BENCHMARK_CAPTURE(decimate_union, bush_n6, "abop-1.25-bush.ls", 6)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
+BENCHMARK_CAPTURE(decimate_union, bush_n7, "abop-1.25-bush.ls", 7)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
+
 // Small inputs that were pathological (the speed issue's list): a build
 // from the grammar's text.
 void build_text(benchmark::State& state, const std::string& text) {

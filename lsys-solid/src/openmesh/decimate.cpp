@@ -21,7 +21,6 @@
 #include <array>
 #include <bit>
 #include <boost/container_hash/hash.hpp>
-#include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <future>
@@ -347,6 +346,12 @@ class GuardedDecimater : public OpenMesh::Decimater::BaseDecimaterT<Mesh> {
   GuardedDecimater(const GuardedDecimater&) = delete;
   GuardedDecimater& operator=(const GuardedDecimater&) = delete;
 
+  // The module whose priority ranks the collapses (OpenMesh's one
+  // non-binary module); the others only veto.
+  void rank_by(OpenMesh::Decimater::ModBaseT<Mesh>& priority) {
+    priority_ = &priority;
+  }
+
   // Collapses until no legal collapse is left or at most `faces` remain.
   // Returns the number of collapses.
   // The vetoes are asked only here, for the collapse about to be made;
@@ -461,22 +466,31 @@ class GuardedDecimater : public OpenMesh::Decimater::BaseDecimaterT<Mesh> {
 
   // Queues the vertex's best collapse that is legal, within the modules'
   // bounds and not refused by the guard since its neighbourhood changed.
+  // The priority module alone ranks the candidates; the binary modules and
+  // the topological test (OpenMesh's is_collapse_ok, which walks both
+  // one-rings) are asked in that order only until one passes, which is
+  // mostly the first: asked of every halfedge, they were a third of the
+  // decimation of the bush at n = 7. The choice is the same: the legal
+  // candidate of least priority, the first of equals round the vertex.
   void enqueue(Mesh::VertexHandle v) {
     const std::uint32_t version = ++mesh_.property(version_, v);
-    float best = FLT_MAX;
-    Mesh::HalfedgeHandle target;
+    candidates_.clear();
     for (const auto h : mesh_.voh_range(v)) {
       if (mesh_.property(refused_, h)) continue;
-      const CollapseInfo ci(mesh_, h);
-      if (!is_collapse_legal(ci)) continue;
-      const float priority = collapse_priority(ci);
-      if (priority >= 0.0F && priority < best) {
-        best = priority;
-        target = h;
-      }
+      const float priority =
+          priority_->collapse_priority(CollapseInfo(mesh_, h));
+      if (priority >= 0.0F) candidates_.emplace_back(priority, h);
     }
-    if (target.is_valid()) {
-      queue_.emplace(best, v.idx(), version, target.idx());
+    while (!candidates_.empty()) {
+      const auto best = std::min_element(
+          candidates_.begin(), candidates_.end(),
+          [](const auto& a, const auto& b) { return a.first < b.first; });
+      const CollapseInfo ci(mesh_, best->second);
+      if (is_collapse_legal(ci) && collapse_priority(ci) >= 0.0F) {
+        queue_.emplace(best->first, v.idx(), version, best->second.idx());
+        return;
+      }
+      candidates_.erase(best);
     }
   }
 
@@ -485,6 +499,8 @@ class GuardedDecimater : public OpenMesh::Decimater::BaseDecimaterT<Mesh> {
   OpenMesh::HPropHandleT<bool> refused_;
   OpenMesh::VPropHandleT<std::uint32_t> version_;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue_;
+  OpenMesh::Decimater::ModBaseT<Mesh>* priority_ = nullptr;
+  std::vector<std::pair<float, Mesh::HalfedgeHandle>> candidates_;
   std::vector<Corners> new_;  // the collapse being tested, v0 moved to p1
   std::vector<Mesh::FaceHandle> new_faces_;  // their faces
 };
@@ -552,6 +568,7 @@ std::size_t run(Mesh& mesh, SurfaceDistance& input_surface,
   if (!decimater.initialize()) {
     throw GeometryError("cannot set up OpenMesh's decimater");
   }
+  decimater.rank_by(decimater.module(quadric));
   if (!bounded) {
     // The samples still follow their faces, refusing nothing.
     return decimater.decimate_to_faces(faces, &samples, nullptr,
@@ -594,6 +611,7 @@ std::size_t collapse_short_edges(Mesh& mesh, SurfaceDistance& input_surface,
   if (!decimater.initialize()) {
     throw GeometryError("cannot set up OpenMesh's decimater");
   }
+  decimater.rank_by(decimater.module(edge_length));
   return decimater.decimate_to_faces(0, &samples, &input_surface,
                                      options.tolerance_mm, guard, {});
 }

@@ -50,6 +50,10 @@ constexpr double kShiftGolden =
     static_cast<int>(kGolden * 1000.0 + 0.5) / 1000.0;
 constexpr std::array<double, 3> kShift{1.0, kShiftGolden, 1.0 - kShiftGolden};
 constexpr int kAttempts = 3;
+// The exact engine's shift: small enough to be far below what any output
+// format keeps (a float's step at 100 mm is 6·10⁻⁶ mm), large enough to be
+// a million steps of a double there, so the coincidence is gone for sure.
+constexpr double kExactShiftMm = 1e-8;
 constexpr double kMendVolumeSlack = 1e-6;
 
 CGAL::Bbox_3 box_of(const Box& b) {
@@ -210,6 +214,14 @@ bool round_and_mend(ExactMesh& mesh) {
   return true;
 }
 
+// The mesh moved by `distance_mm` along kShift, in doubles.
+TriangleMesh shifted_mesh(TriangleMesh mesh, double distance_mm) {
+  const glm::dvec3 by(distance_mm * kShift[0], distance_mm * kShift[1],
+                      distance_mm * kShift[2]);
+  for (glm::dvec3& p : mesh.vertices) p += by;
+  return mesh;
+}
+
 void translate(ExactMesh& mesh, const Exact::Vector_3& by) {
   for (const auto v : mesh.vertices()) mesh.point(v) = mesh.point(v) + by;
 }
@@ -360,6 +372,8 @@ class Unioner {
     stats_.crossings += u.counters.crossings;
     stats_.cut_faces += u.counters.cut_faces;
     degenerate_ = u.degenerate;
+    transversal_ = u.transversal;
+    unrounded_ = false;
     if (!u.failure.empty()) {
       last_failure_ = u.failure;
       return std::nullopt;
@@ -370,6 +384,7 @@ class Unioner {
                                           : mended(u.mesh);
     if (!out) {
       last_failure_ = "its new points could not be rounded to doubles";
+      unrounded_ = true;
       return std::nullopt;
     }
     ++stats_.rounded;
@@ -383,7 +398,33 @@ class Unioner {
       return a;
     }
     if (engine_ == UnionEngine::ExactCrossings && !a.exact && !b.exact) {
-      if (std::optional<TriangleMesh> u = exact_union(a, b, round_points)) {
+      // A degeneracy where faces cross (an edge through an edge where
+      // branches mirror each other) is moved off by a tiny shift of the
+      // smaller operand along the corefinement's retry direction: the parts
+      // overlap as before, 10⁻⁸ mm further on. New points that could not be
+      // rounded to doubles are shifted, too: they then fall elsewhere (ABOP
+      // fig. 1.26's leaf plates at n = 3 rounded at the second shift). Faces
+      // that touch go to the corefinement, which handles them exactly (a shift
+      // could part them), as does a shift that does not help; it costs minutes
+      // on a large operand (ternary fig. 2.8b: one such union was 50 of its 61
+      // s).
+      Group& moved = b.faces() <= a.faces() ? b : a;
+      const Group& fixed = &moved == &b ? a : b;
+      std::optional<TriangleMesh> u = exact_union(a, b, round_points);
+      const bool degenerate = degenerate_;
+      const std::string failure = last_failure_;
+      for (int attempt = 1;
+           !u && (transversal_ || unrounded_) && attempt < kAttempts;
+           ++attempt) {
+        const Group shifted{
+            shifted_mesh(moved.plain, kExactShiftMm * attempt), {}, {}, {}};
+        u = exact_union(fixed, shifted, round_points);
+        if (u) {
+          ++stats_.retries;
+          moved.box += box_of(bounds(shifted.plain));
+        }
+      }
+      if (u) {
         ++stats_.booleans;
         ++stats_.exact_unions;
         a.plain = std::move(*u);
@@ -391,16 +432,20 @@ class Unioner {
         a.parts.insert(a.parts.end(), b.parts.begin(), b.parts.end());
         return a;
       }
-      // A degeneracy (faces that touch, a vertex on a face) goes to the
-      // corefinement, which handles coplanar faces exactly; a shift, which
-      // the exact engine could use, would move the result by 10⁻⁵ mm.
+      // Counted by the first failure: a degeneracy that a shift did not
+      // take away is still one.
       std::size_t& count =
-          degenerate_ ? stats_.degenerate_unions : stats_.fallbacks;
+          degenerate ? stats_.degenerate_unions : stats_.fallbacks;
       std::string& reason =
-          degenerate_ ? stats_.degenerate_reason : stats_.fallback_reason;
+          degenerate ? stats_.degenerate_reason : stats_.fallback_reason;
       if (count++ == 0) {
         reason = "the union of " + describe(a) + " with " + describe(b) + ": " +
-                 last_failure_;
+                 failure;
+        if (failure != last_failure_) {
+          reason += " (shifted: ";
+          reason += last_failure_;
+          reason += ")";
+        }
       }
     }
     for (int attempt = 0; attempt < kAttempts; ++attempt) {
@@ -541,6 +586,8 @@ class Unioner {
   exact_union::FilterCounters filters_;
   std::string last_failure_;  // what CGAL said, if it threw
   bool degenerate_ = false;   // the exact engine's last failure
+  bool transversal_ = false;  // and whether a shift removes it
+  bool unrounded_ = false;    // its new points could not be rounded
 };
 
 }  // namespace

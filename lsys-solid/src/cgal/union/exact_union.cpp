@@ -59,6 +59,10 @@ Point3 point3(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 struct Failure {
   std::string what;
   bool degenerate = false;
+  // Where the faces cross each other's planes (each has corners strictly
+  // on both sides of the other's): a shift takes the coincidence away and
+  // leaves the crossing, so which parts overlap stays the same.
+  bool transversal = false;
 };
 
 // Runs body(begin, end, chunk) over [0, n) in chunks of fixed size on
@@ -153,7 +157,7 @@ std::optional<Segment> cross_faces(const std::array<Operand, 2>& ops,
       if (!CGAL::do_intersect(ta, tb)) return std::nullopt;
       throw Failure{"faces touch", true};
     }
-    throw Failure{"a vertex lies on a face's plane", true};
+    throw Failure{"a vertex lies on a face's plane", true, true};
   }
   std::array<Crossing, 2> ends;
   std::array<bool, 2> is_forward{};
@@ -174,7 +178,7 @@ std::optional<Segment> cross_faces(const std::array<Operand, 2>& ops,
           s0 == CGAL::NEGATIVE || s1 == CGAL::NEGATIVE || s2 == CGAL::NEGATIVE;
       if (any_pos && any_neg) continue;
       if (s0 == CGAL::ZERO || s1 == CGAL::ZERO || s2 == CGAL::ZERO)
-        throw Failure{"an edge passes through an edge", true};
+        throw Failure{"an edge passes through an edge", true, true};
       if (found == 2) throw Failure{"faces cross in more than two points"};
       Crossing& c = ends[found];
       c.mesh = static_cast<std::uint32_t>(m);
@@ -475,6 +479,7 @@ class Engine {
     } catch (const Failure& f) {
       result.failure = f.what;
       result.degenerate = f.degenerate;
+      result.transversal = f.transversal;
     } catch (const CGAL::Failure_exception& e) {
       // A violated precondition of CGAL's (on as exceptions): a bug here.
       result.failure = std::string("CGAL: ") + e.what();
@@ -522,16 +527,28 @@ class Engine {
         std::ptrdiff_t(10), CGAL::Box_intersection_d::CLOSED);
     std::sort(pairs.begin(), pairs.end());
     counters_.face_pairs = pairs.size();
-    std::vector<std::vector<Segment>> found((pairs.size() + 255) / 256);
+    const std::size_t chunks = (pairs.size() + 255) / 256;
+    std::vector<std::vector<Segment>> found(chunks);
+    // A transversal degeneracy does not stop the search: if faces also
+    // touch somewhere, that is the failure to report, since a shift could
+    // part them.
+    std::vector<std::optional<Failure>> transversal(chunks);
     for_each_chunk(pairs.size(),
                    [&](std::size_t begin, std::size_t end, std::size_t chunk) {
                      for (std::size_t i = begin; i < end; ++i) {
-                       if (std::optional<Segment> s = cross_faces(
-                               ops_, pairs[i].first, pairs[i].second)) {
-                         found[chunk].push_back(*s);
+                       try {
+                         if (std::optional<Segment> s = cross_faces(
+                                 ops_, pairs[i].first, pairs[i].second)) {
+                           found[chunk].push_back(*s);
+                         }
+                       } catch (const Failure& f) {
+                         if (!f.transversal) throw;
+                         if (!transversal[chunk]) transversal[chunk] = f;
                        }
                      }
                    });
+    for (const std::optional<Failure>& f : transversal)
+      if (f) throw *f;
     for (const std::vector<Segment>& list : found)
       segments_.insert(segments_.end(), list.begin(), list.end());
   }

@@ -40,9 +40,18 @@ struct PairUnion {
   /// intersect.
   std::vector<std::uint32_t> contact_faces;
   bool degenerate = false;
+  /// A degeneracy only where the operands' faces cross each other's planes
+  /// (an edge through an edge, a vertex on a face it crosses), not where
+  /// faces touch: a shift removes it without parting parts that touch.
+  bool transversal = false;
   std::string failure;
   PairCounters counters;
 };
+
+/// Whether rounding the new points kept the union free of degenerate and
+/// intersecting faces (exact predicates on the rounded coordinates; only
+/// faces in `u.contact_faces` can have changed or be met).
+[[nodiscard]] bool rounding_kept_valid(const PairUnion& u);
 
 /// The union of `a` and `b`: every edge–face crossing decided once, exactly,
 /// on the input coordinates; cut faces triangulated with the crossings as
@@ -50,11 +59,6 @@ struct PairUnion {
 /// (docs/design.md, "The exact union engine").
 /// @pre both are closed, outward-oriented 2-manifolds without
 ///   self-intersections, with double coordinates.
-/// Whether rounding the new points kept the union free of degenerate and
-/// intersecting faces (exact predicates on the rounded coordinates; only
-/// faces in `u.contact_faces` can have changed or be met).
-[[nodiscard]] bool rounding_kept_valid(const PairUnion& u);
-
 [[nodiscard]] PairUnion unite_pair(const TriangleMesh& a, const TriangleMesh& b,
                                    FilterCounters& filters);
 

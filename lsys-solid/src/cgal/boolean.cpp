@@ -50,9 +50,10 @@ constexpr double kShiftGolden =
     static_cast<int>(kGolden * 1000.0 + 0.5) / 1000.0;
 constexpr std::array<double, 3> kShift{1.0, kShiftGolden, 1.0 - kShiftGolden};
 constexpr int kAttempts = 3;
-// The exact engine's shift: small enough to be far below what any output
-// format keeps (a float's step at 100 mm is 6·10⁻⁶ mm), large enough to be
-// a million steps of a double there, so the coincidence is gone for sure.
+// The exact engine's shift, at least this and less than twice as far: small
+// enough to be far below what any output format keeps (a float's step at
+// 100 mm is 6·10⁻⁶ mm), large enough to be a million steps of a double
+// there, so the coincidence is gone for sure.
 constexpr double kExactShiftMm = 1e-8;
 constexpr double kMendVolumeSlack = 1e-6;
 
@@ -416,8 +417,13 @@ class Unioner {
       for (int attempt = 1;
            !u && (transversal_ || unrounded_) && attempt < kAttempts;
            ++attempt) {
-        const Group shifted{
-            shifted_mesh(moved.plain, kExactShiftMm * attempt), {}, {}, {}};
+        // Each shift of the build its own distance: a part shifted once,
+        // met again by its twin shifted by as much, would coincide again
+        // (two identical leaves of the blog's tree B did).
+        const double golden_step = kGolden * static_cast<double>(shifts_++);
+        const double distance_mm =
+            kExactShiftMm * (1.0 + golden_step - std::floor(golden_step));
+        const Group shifted{shifted_mesh(moved.plain, distance_mm), {}, {}, {}};
         u = exact_union(fixed, shifted, round_points);
         if (u) {
           ++stats_.retries;
@@ -588,6 +594,7 @@ class Unioner {
   bool degenerate_ = false;   // the exact engine's last failure
   bool transversal_ = false;  // and whether a shift removes it
   bool unrounded_ = false;    // its new points could not be rounded
+  std::size_t shifts_ = 0;    // the exact engine's shifts so far
 };
 
 }  // namespace

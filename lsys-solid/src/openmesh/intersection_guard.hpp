@@ -56,6 +56,7 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
     cells_.clear();
     large_.clear();
     seen_.assign(m.n_faces(), 0);
+    version_.assign(m.n_faces(), 0);
     changing_.assign(m.n_faces(), 0);
     box_lo_.assign(m.n_faces(), glm::dvec3(0.0));
     box_hi_.assign(m.n_faces(), glm::dvec3(0.0));
@@ -68,8 +69,11 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
                                : float(Base::LEGAL_COLLAPSE);
   }
 
-  /// Indexes the faces that moved.
+  /// Indexes the faces that moved; the entries of those it removed go stale.
   void postprocess_collapse(const CollapseInfo& ci) override {
+    for (const auto f : {ci.fl, ci.fr}) {
+      if (f.is_valid()) ++version_[static_cast<std::size_t>(f.idx())];
+    }
     for (const auto f : Base::mesh().vf_range(ci.v1)) insert(f);
   }
 
@@ -117,20 +121,43 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
     }
     ++query_stamp_;
     nearby_.clear();
-    for_cells(lo, hi, [&](const std::vector<int>& cell) {
-      for (const int index : cell) {
-        if (seen_[index] == query_stamp_) continue;
-        seen_[index] = query_stamp_;
+    // Entries of faces deleted or moved since (a collapse adds a face's new
+    // cells and leaves the old) are dropped as they are met.
+    const auto visit = [&](std::vector<Entry>& cell) {
+      std::size_t kept = 0;
+      for (const Entry& entry : cell) {
+        const int index = entry.face;
         const auto i = static_cast<std::size_t>(index);
+        if (entry.version != version_[i]) continue;
+        cell[kept++] = entry;
+        if (seen_[i] == query_stamp_) continue;
+        seen_[i] = query_stamp_;
         // The box kept since the face last changed rejects most
         // candidates without walking the mesh for their corners.
-        if (changing_[index] != collapse_stamp_ &&
+        if (changing_[i] != collapse_stamp_ &&
             overlap(lo, hi, box_lo_[i], box_hi_[i]) &&
             !m.status(typename MeshT::FaceHandle(index)).deleted()) {
           nearby_.push_back(index);
         }
       }
-    });
+      cell.resize(kept);
+    };
+    if (grid_.count(lo, hi) <= kLargeCells) {
+      for_cells(lo, hi, visit);
+    } else {
+      // A large fan (a leaf's face across hundreds of cells): only the cells
+      // its triangles pass through, where any face that meets one has an
+      // entry. Its box's cells were, past the number of cells filled, all
+      // of them: most of the blog's tree B's decimation.
+      visit(large_);
+      for (const IndexedTriangle& t : fresh_) {
+        for_each_cell_through(grid_, t.points[0], t.points[1], t.points[2],
+                              [&](Cell key) {
+                                const auto it = cells_.find(key);
+                                if (it != cells_.end()) visit(it->second);
+                              });
+      }
+    }
     for (const int index : nearby_) {
       const auto i = static_cast<std::size_t>(index);
       std::optional<IndexedTriangle> other;
@@ -194,11 +221,13 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
   void insert(typename MeshT::FaceHandle f) {
     const IndexedTriangle t = triangle(f);
     const auto [lo, hi] = box(t);
-    box_lo_[static_cast<std::size_t>(f.idx())] = lo;
-    box_hi_[static_cast<std::size_t>(f.idx())] = hi;
+    const auto i = static_cast<std::size_t>(f.idx());
+    box_lo_[i] = lo;
+    box_hi_[i] = hi;
+    const Entry entry{f.idx(), ++version_[i]};
     const auto add = [&](Cell key) {
-      std::vector<int>& cell = cells_[key];
-      if (cell.empty() || cell.back() != f.idx()) cell.push_back(f.idx());
+      std::vector<Entry>& cell = cells_[key];
+      if (cell.empty() || cell.back() != entry) cell.push_back(entry);
     };
     const double cells = grid_.count(lo, hi);
     if (cells <= kLargeCells) {
@@ -209,7 +238,7 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
     // underside) goes to the cells it passes through; beyond kHugeCells, to
     // the list every query visits.
     if (cells > kHugeCells) {
-      large_.push_back(f.idx());
+      large_.push_back(entry);
       return;
     }
     for_each_cell_through(grid_, t.points[0], t.points[1], t.points[2], add);
@@ -223,8 +252,16 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
   static constexpr double kLargeCells = 512.0;
   static constexpr double kHugeCells = double(1 << 16);
   CellGrid grid_;
-  std::unordered_map<Cell, std::vector<int>> cells_;
-  std::vector<int> large_;
+  // A face in a cell, as it was when inserted: stale once the face's
+  // version has moved on.
+  struct Entry {
+    int face = 0;
+    std::uint32_t version = 0;
+    bool operator==(const Entry&) const = default;
+  };
+  std::unordered_map<Cell, std::vector<Entry>> cells_;
+  std::vector<Entry> large_;
+  std::vector<std::uint32_t> version_;   // per face: inserts so far
   std::vector<std::uint32_t> seen_;      // per face: last query
   std::vector<std::uint32_t> changing_;  // per face: last collapse tested
   std::vector<glm::dvec3> box_lo_;       // per face: its box when inserted

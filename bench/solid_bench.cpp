@@ -123,6 +123,11 @@ BENCHMARK_CAPTURE(decimate_union, bush_n6, "abop-1.25-bush.ls", 6)
 BENCHMARK_CAPTURE(decimate_union, bush_n7, "abop-1.25-bush.ls", 7)
     ->Unit(benchmark::kSecond)
     ->Iterations(1);
+// Leaf plates: large faces beside dense cut regions (1.67 million
+// triangles at the gallery's n = 10, most of its build in decimation).
+BENCHMARK_CAPTURE(decimate_union, blog_tree_b_n9, "blog-tree-b.ls", 9)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
 
 // Small inputs that were pathological (the speed issue's list): a build
 // from the grammar's text.

@@ -401,14 +401,15 @@ class Unioner {
     if (engine_ == UnionEngine::ExactCrossings && !a.exact && !b.exact) {
       // A degeneracy where faces cross (an edge through an edge where
       // branches mirror each other) is moved off by a tiny shift of the
-      // smaller operand along the corefinement's retry direction: the parts
-      // overlap as before, 10⁻⁸ mm further on. New points that could not be
-      // rounded to doubles are shifted, too: they then fall elsewhere (ABOP
-      // fig. 1.26's leaf plates at n = 3 rounded at the second shift). Faces
-      // that touch go to the corefinement, which handles them exactly (a shift
-      // could part them), as does a shift that does not help; it costs minutes
-      // on a large operand (ternary fig. 2.8b: one such union was 50 of its 61
-      // s).
+      // smaller operand along the corefinement's retry direction, 10⁻⁸ mm:
+      // faces that cross go on crossing; solids that met only at that point
+      // are parted or joined, as the corefinement's own shift does with
+      // parts that touch at a point. New points that could not be rounded to
+      // doubles are shifted, too: they then fall elsewhere (ABOP fig. 1.26's
+      // leaf plates at n = 3 rounded at the second shift). Faces that touch
+      // go to the corefinement, which handles them exactly (a shift could
+      // part them), as does a shift that does not help; it costs minutes on
+      // a large operand (ternary fig. 2.8b: one such union, 50 s of 61).
       Group& moved = b.faces() <= a.faces() ? b : a;
       const Group& fixed = &moved == &b ? a : b;
       std::optional<TriangleMesh> u = exact_union(a, b, round_points);

@@ -61,7 +61,7 @@ struct Failure {
   bool degenerate = false;
   // Where the faces cross each other's planes (each has corners strictly
   // on both sides of the other's): a shift takes the coincidence away and
-  // leaves the crossing, so which parts overlap stays the same.
+  // leaves any crossing of the faces, unlike one of faces that touch.
   bool transversal = false;
 };
 

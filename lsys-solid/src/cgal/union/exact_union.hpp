@@ -41,8 +41,9 @@ struct PairUnion {
   std::vector<std::uint32_t> contact_faces;
   bool degenerate = false;
   /// A degeneracy only where the operands' faces cross each other's planes
-  /// (an edge through an edge, a vertex on a face it crosses), not where
-  /// faces touch: a shift removes it without parting parts that touch.
+  /// (an edge through an edge, a vertex on a plane the face crosses), none
+  /// where faces touch: a shift removes it and keeps faces that cross
+  /// crossing.
   bool transversal = false;
   std::string failure;
   PairCounters counters;

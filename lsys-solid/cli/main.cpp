@@ -84,7 +84,8 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"exact", "corefine"}))
       ->excludes(no_union);
   app.add_option("--threads", build.threads,
-                 "the threads the union may use, 1 to 256 (default: all the "
+                 "the threads the union and decimation may use, 1 to 256 "
+                 "(default: all the "
                  "machine's); the model is the same whatever the number")
       ->type_name("N");
   app.add_flag("--multi-material", build.multi_material,

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <tbb/global_control.h>
 
 #include <algorithm>
 #include <chrono>
@@ -11,6 +12,7 @@
 #include <functional>
 #include <glm/geometric.hpp>
 #include <map>
+#include <optional>
 #include <set>
 #include <string_view>
 
@@ -599,6 +601,12 @@ void refuse_beyond_a_kilometre(const lsys::Grammar& grammar,
 Solid build_from_skeleton(const lsys::Grammar& grammar,
                           const lsys::Skeleton& drawn,
                           const SolidOptions& options, Stopwatch& clock) {
+  // The union and the decimation (its two halves) run on oneTBB's threads.
+  std::optional<tbb::global_control> limit;
+  if (options.threads > 0) {
+    limit.emplace(tbb::global_control::max_allowed_parallelism,
+                  static_cast<std::size_t>(options.threads));
+  }
   Solid solid;
   SolidReport& report = solid.report;
   const auto tell = [&](std::string_view stage, double fraction) {

@@ -8,6 +8,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
+#include <memory>
 #include <unordered_map>
 #include <vector>
 
@@ -103,7 +104,9 @@ class SurfaceDistance {
   /// triangles a cell, each query tried them all; 1.2 mm by area, and the
   /// decimation took 3.2 s instead of 8.6 s, with the same answers).
   explicit SurfaceDistance(const TriangleMesh& mesh, double min_cell_mm = 0.0)
-      : mesh_(mesh) {
+      : mesh_(mesh), seen_(mesh.triangles.size(), 0) {
+    auto index = std::make_shared<Index>();
+    CellGrid& grid = index->grid;
     double area = 0.0;
     for (const auto& t : mesh.triangles) {
       const glm::dvec3& a = mesh.vertices[t[0]];
@@ -111,13 +114,12 @@ class SurfaceDistance {
                                      mesh.vertices[t[2]] - a)) /
               2.0;
     }
-    grid_ = CellGrid(std::max(
+    grid = CellGrid(std::max(
         {min_cell_mm,
          mesh.triangles.empty()
              ? 1.0
              : std::sqrt(area / static_cast<double>(mesh.triangles.size())),
          1e-6}));
-    seen_.assign(mesh.triangles.size(), 0);
     for (std::uint32_t i = 0; i < mesh.triangles.size(); ++i) {
       const auto& t = mesh.triangles[i];
       const glm::dvec3& a = mesh.vertices[t[0]];
@@ -125,21 +127,28 @@ class SurfaceDistance {
       const glm::dvec3& c = mesh.vertices[t[2]];
       const glm::dvec3 lo = glm::min(glm::min(a, b), c);
       const glm::dvec3 hi = glm::max(glm::max(a, b), c);
-      const double cells = grid_.count(lo, hi);
+      const double cells = grid.count(lo, hi);
       if (cells > kHugeCells) {
-        large_.push_back(i);  // tested by every query
+        index->large.push_back(i);  // tested by every query
       } else if (cells > kLargeCells) {
         // A long sliver across many cells, such as the flat underside's:
         // only the cells it passes through.
-        for_each_cell_through(grid_, a, b, c, [&](std::uint64_t key) {
-          cells_[key].push_back(i);
+        for_each_cell_through(grid, a, b, c, [&](std::uint64_t key) {
+          index->cells[key].push_back(i);
         });
       } else {
-        grid_.for_each(lo, hi, [&](std::uint64_t key, const glm::dvec3&) {
-          cells_[key].push_back(i);
+        grid.for_each(lo, hi, [&](std::uint64_t key, const glm::dvec3&) {
+          index->cells[key].push_back(i);
         });
       }
     }
+    index_ = std::move(index);
+  }
+
+  /// A second querier of the same surface and index, with its own query
+  /// state, for another thread: the index is read only.
+  [[nodiscard]] SurfaceDistance sharing() const {
+    return SurfaceDistance(mesh_, index_);
   }
 
   /// The distance from `p` to the nearest triangle, or `limit_mm` if none
@@ -150,7 +159,7 @@ class SurfaceDistance {
     // nearest of all. Most points lie on or near the surface and stop at
     // the first cube, where the whole limit's cube would visit thousands
     // of cells.
-    double reach = std::min(limit_mm, grid_.cell_mm() / 4.0);
+    double reach = std::min(limit_mm, index_->grid.cell_mm() / 4.0);
     double best = limit_mm * limit_mm;
     for (;;) {
       ++stamp_;
@@ -161,12 +170,12 @@ class SurfaceDistance {
           best = std::min(best, squared_distance(i, p));
         }
       };
-      test(large_);
-      grid_.for_each(p - reach, p + reach,
-                     [&](std::uint64_t key, const glm::dvec3&) {
-                       const auto it = cells_.find(key);
-                       if (it != cells_.end()) test(it->second);
-                     });
+      test(index_->large);
+      index_->grid.for_each(p - reach, p + reach,
+                            [&](std::uint64_t key, const glm::dvec3&) {
+                              const auto it = index_->cells.find(key);
+                              if (it != index_->cells.end()) test(it->second);
+                            });
       if (best <= reach * reach || reach >= limit_mm) break;
       reach = std::min(limit_mm, 2.0 * reach);
     }
@@ -228,23 +237,33 @@ class SurfaceDistance {
         }
       }
     };
-    test(large_);
-    grid_.for_each(p - distance_mm, p + distance_mm,
-                   [&](std::uint64_t key, const glm::dvec3&) {
-                     if (found) return;
-                     const auto it = cells_.find(key);
-                     if (it != cells_.end()) test(it->second);
-                   });
+    test(index_->large);
+    index_->grid.for_each(p - distance_mm, p + distance_mm,
+                          [&](std::uint64_t key, const glm::dvec3&) {
+                            if (found) return;
+                            const auto it = index_->cells.find(key);
+                            if (it != index_->cells.end()) test(it->second);
+                          });
     return found;
   }
 
   static constexpr double kLargeCells = 8.0;
   static constexpr double kHugeCells = double(1 << 22);
 
+  // The triangles by cell, shared by the queriers of one surface.
+  struct Index {
+    CellGrid grid;
+    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells;
+    std::vector<std::uint32_t> large;
+  };
+
+  SurfaceDistance(const TriangleMesh& mesh, std::shared_ptr<const Index> index)
+      : mesh_(mesh),
+        index_(std::move(index)),
+        seen_(mesh.triangles.size(), 0) {}
+
   const TriangleMesh& mesh_;
-  CellGrid grid_;
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
-  std::vector<std::uint32_t> large_;
+  std::shared_ptr<const Index> index_;
   std::vector<std::uint32_t> seen_;
   std::uint32_t stamp_ = 0;
   std::uint32_t hint_ = ~std::uint32_t{0};  ///< the last triangle that answered

@@ -3,6 +3,7 @@
 #include "lsolid/decimate.hpp"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <glm/geometric.hpp>
 #include <set>
@@ -66,6 +67,23 @@ std::set<std::tuple<double, double, double>> coordinates(
   return out;
 }
 
+// The ABOP bush's union at derivation length n.
+TriangleMesh bush_union(int n) {
+  return union_of(
+      lsys::testing::parse_file("printables/abop-1.25-bush.ls",
+                                {.extra_settings = print_setting_names()}),
+      n);
+}
+
+// Every vertex of `output` is one of `input`'s, coordinates and all.
+void expect_only_vertices_of(const TriangleMesh& input,
+                             const TriangleMesh& output) {
+  const auto before = coordinates(input);
+  for (const glm::dvec3& p : output.vertices) {
+    EXPECT_TRUE(before.count({p.x, p.y, p.z}) == 1);
+  }
+}
+
 TEST(Decimate, ReducesAFinelyCutCubeToTwelveTriangles) {
   const TriangleMesh cube = fine_cube(4);
   ASSERT_EQ(cube.triangles.size(), 12u * 16u);
@@ -79,10 +97,7 @@ TEST(Decimate, ReducesAFinelyCutCubeToTwelveTriangles) {
 }
 
 TEST(Decimate, KeepsTheBushValidAndWithinTolerance) {
-  const TriangleMesh bush = union_of(
-      lsys::testing::parse_file("printables/abop-1.25-bush.ls",
-                                {.extra_settings = print_setting_names()}),
-      4);
+  const TriangleMesh bush = bush_union(4);
   const Decimated d = decimate(bush, {.tolerance_mm = 0.05});
   EXPECT_LT(d.stats.triangles_after, d.stats.triangles_before);
   expect_printable(d.mesh);
@@ -91,10 +106,39 @@ TEST(Decimate, KeepsTheBushValidAndWithinTolerance) {
   // Measured again, independently of the report.
   EXPECT_LE(hausdorff_distance_mm(bush, d.mesh, 0.002), 0.05 + 0.002);
   // Collapses only remove vertices: the rest keep their coordinates.
-  const auto before = coordinates(bush);
-  for (const glm::dvec3& p : d.mesh.vertices) {
-    EXPECT_TRUE(before.count({p.x, p.y, p.z}) == 1);
-  }
+  expect_only_vertices_of(bush, d.mesh);
+}
+
+TEST(Decimate, ReducesAFinelyCutCubeToTwelveTrianglesInHalvesToo) {
+  // Cut in two at the median, each half keeps the triangles across the cut;
+  // the whole mesh then takes them away.
+  const Decimated d = decimate(fine_cube(4), {.halve_from_triangles = 0});
+  EXPECT_EQ(d.stats.triangles_after, 12u);
+  EXPECT_NEAR(signed_volume(d.mesh), 1000.0, 1e-9);
+  expect_printable(d.mesh);
+}
+
+TEST(Decimate, DecimatesTheBushInHalvesAsWellAsWholeOnAnyNumberOfThreads) {
+  const TriangleMesh bush = bush_union(4);
+  const Decimated whole =
+      decimate(bush, {.tolerance_mm = 0.05, .halve_from_triangles = 1u << 30});
+  const Decimated halves =
+      decimate(bush, {.tolerance_mm = 0.05, .halve_from_triangles = 0});
+  expect_printable(halves.mesh);
+  EXPECT_LE(halves.stats.max_deviation_mm, 0.05);
+  EXPECT_LE(hausdorff_distance_mm(bush, halves.mesh, 0.002), 0.05 + 0.002);
+  // The triangles across the cut are few: the halves and the whole remove
+  // about as many.
+  EXPECT_LT(double(halves.stats.triangles_after),
+            1.05 * double(whole.stats.triangles_after));
+  expect_only_vertices_of(bush, halves.mesh);
+  // One thread decimates both halves, one after the other, to the same mesh.
+  const tbb::global_control one(tbb::global_control::max_allowed_parallelism,
+                                1);
+  const Decimated alone =
+      decimate(bush, {.tolerance_mm = 0.05, .halve_from_triangles = 0});
+  EXPECT_EQ(alone.mesh.vertices, halves.mesh.vertices);
+  EXPECT_EQ(alone.mesh.triangles, halves.mesh.triangles);
 }
 
 TEST(Decimate, KeepsTheEdgesAlongAConcaveCreaseWithinTheToleranceInOneRun) {
@@ -120,10 +164,7 @@ TEST(Decimate, TheGuardIsWhatKeepsAHardDecimationValid) {
   // A cap far below what 0.05 mm allows forces collapses that OpenMesh's own
   // modules accept although they make the bush cut itself (23 pairs when
   // measured); the guard refuses those.
-  const TriangleMesh bush = union_of(
-      lsys::testing::parse_file("printables/abop-1.25-bush.ls",
-                                {.extra_settings = print_setting_names()}),
-      4);
+  const TriangleMesh bush = bush_union(4);
   const Decimated unguarded = decimate(bush, {.max_triangles = 800,
                                               .refuse_intersections = false,
                                               .measure_deviation = false});
@@ -136,10 +177,7 @@ TEST(Decimate, TheGuardIsWhatKeepsAHardDecimationValid) {
 }
 
 TEST(Decimate, ReachesATriangleCapBeyondTheTolerance) {
-  const TriangleMesh bush = union_of(
-      lsys::testing::parse_file("printables/abop-1.25-bush.ls",
-                                {.extra_settings = print_setting_names()}),
-      4);
+  const TriangleMesh bush = bush_union(4);
   const Decimated d = decimate(bush, {.max_triangles = 1500});
   EXPECT_TRUE(d.stats.reached_max_triangles);
   EXPECT_LE(d.mesh.triangles.size(), 1500u);
@@ -169,10 +207,7 @@ TEST(Decimate, TheHilbertCubeHasNothingToRemoveWithinTolerance) {
 }
 
 TEST(Decimate, StartsAgainAimingLowerWhenItOvershootsTheTolerance) {
-  const TriangleMesh bush = union_of(
-      lsys::testing::parse_file("printables/abop-1.25-bush.ls",
-                                {.extra_settings = print_setting_names()}),
-      4);
+  const TriangleMesh bush = bush_union(4);
   // Aiming at three times the tolerance overshoots it; what is returned
   // is still within it, found by decimating again.
   const Decimated d = decimate(bush, {.tolerance_mm = 0.05, .aim = 3.0});
@@ -216,10 +251,7 @@ std::size_t edges_shorter_than(const TriangleMesh& mesh, double length_mm) {
 }
 
 TEST(Decimate, CollapsesEdgesShorterThanSlicersMergeVerticesAt) {
-  const TriangleMesh bush = union_of(
-      lsys::testing::parse_file("printables/abop-1.25-bush.ls",
-                                {.extra_settings = print_setting_names()}),
-      4);
+  const TriangleMesh bush = bush_union(4);
   const std::size_t before = edges_shorter_than(bush, 0.03);
   ASSERT_GT(before, 20U);
   // Aiming at next to nothing, the quadric keeps them; the last pass does

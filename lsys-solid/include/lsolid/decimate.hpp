@@ -36,6 +36,12 @@ struct DecimateOptions {
   /// The fraction of the tolerance that the vetoes aim at first: they test
   /// at sample points, and the surface strays a little past them between.
   double aim = 0.8;
+  /// A mesh of this many triangles or more is cut in two across its
+  /// longest side and the halves are decimated at once (two threads within
+  /// the build's limit), the triangles crossing the cut kept, then the
+  /// whole for what is left. The result depends on this, never on the
+  /// number of threads.
+  std::size_t halve_from_triangles = 100000;
   /// Told the fraction of the collapses done (an estimate), 0 to 1.
   std::function<void(double fraction)> progress;
 };

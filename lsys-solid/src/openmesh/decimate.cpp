@@ -12,6 +12,8 @@
 // next-best halfedge.
 #include "lsolid/decimate.hpp"
 
+#include <tbb/parallel_invoke.h>
+
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Decimater/BaseDecimaterT.hh>
 #include <OpenMesh/Tools/Decimater/ModAspectRatioT.hh>
@@ -19,10 +21,12 @@
 #include <OpenMesh/Tools/Decimater/ModNormalFlippingT.hh>
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <bit>
 #include <boost/container_hash/hash.hpp>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <future>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -174,6 +178,44 @@ struct Traits : OpenMesh::DefaultTraits {
 using Mesh = OpenMesh::TriMesh_ArrayKernelT<Traits>;
 using CollapseInfo = OpenMesh::Decimater::CollapseInfoT<Mesh>;
 
+// A piece of the input that a face of the current mesh holds: a
+// sub-triangle of input triangle `index`'s lattice, in grid coordinates
+// (exact in floats: halves of at most 16 steps, three times), `side_steps`
+// a side; a grid point (side 0, at uv[0]); or input vertex `index` (side
+// -1).
+struct InputPiece {
+  std::uint32_t index = 0;
+  float side_steps = 0.0F;
+  std::array<glm::vec2, 3> uv{};
+};
+
+// The steps a side of each input triangle's grid (sample_steps, at least 2).
+std::vector<std::uint8_t> input_steps(const TriangleMesh& input) {
+  std::vector<std::uint8_t> steps;
+  steps.reserve(input.triangles.size());
+  for (const auto& t : input.triangles) {
+    steps.push_back(static_cast<std::uint8_t>(sample_steps(
+        {input.vertices[t[0]], input.vertices[t[1]], input.vertices[t[2]]},
+        2.0)));
+  }
+  return steps;
+}
+
+// Each face holding its input triangle whole: face f is input triangle
+// `input_face[f]`.
+std::vector<std::vector<InputPiece>> whole_pieces(
+    const std::vector<std::uint8_t>& steps,
+    const std::vector<std::uint32_t>& input_face) {
+  std::vector<std::vector<InputPiece>> pieces;
+  pieces.reserve(input_face.size());
+  for (const std::uint32_t index : input_face) {
+    const float n = steps[index];
+    pieces.push_back({InputPiece{
+        index, n, {glm::vec2(0, 0), glm::vec2(n, 0), glm::vec2(0, n)}}});
+  }
+  return pieces;
+}
+
 // The input that the result must stay near, in pieces, each held by a face
 // of the current mesh that lies within the distance of it: the input triangles,
 // each at first whole, and every vertex a collapse removes (as OpenMesh's
@@ -190,27 +232,25 @@ using CollapseInfo = OpenMesh::Decimater::CollapseInfoT<Mesh>;
 // its input for 0.05 mm, and decimation ran three times.
 class InputPieces {
  public:
-  // `input` is the mesh `mesh` was made from, face for face and vertex for
-  // vertex; it is kept by reference.
-  InputPieces(Mesh& mesh, const TriangleMesh& input)
-      : mesh_(mesh), input_(input) {
+  // Face f of `mesh` holds `pieces[f]`; vertex v is input vertex
+  // `input_vertex[v]`. `input` and `steps` (input_steps) are kept by
+  // reference.
+  InputPieces(Mesh& mesh, const TriangleMesh& input,
+              const std::vector<std::uint8_t>& steps,
+              const std::vector<std::uint32_t>& input_vertex,
+              std::vector<std::vector<InputPiece>> pieces)
+      : mesh_(mesh), input_(input), steps_(steps) {
     mesh_.add_property(pieces_);
     // Garbage collection between runs renumbers the vertices; a removed
     // vertex is named by its index in `input`, which this property keeps.
     mesh_.add_property(input_vertex_);
     for (const auto v : mesh_.vertices()) {
-      mesh_.property(input_vertex_, v) = static_cast<std::uint32_t>(v.idx());
+      mesh_.property(input_vertex_, v) =
+          input_vertex[static_cast<std::size_t>(v.idx())];
     }
-    steps_.reserve(input.triangles.size());
-    std::uint32_t index = 0;
     for (const auto f : mesh_.faces()) {
-      steps_.push_back(
-          static_cast<std::uint8_t>(sample_steps(corners_of(index), 2.0)));
-      const float n = steps_.back();
-      mesh_.property(pieces_, f)
-          .push_back(Piece{
-              index, n, {glm::vec2(0, 0), glm::vec2(n, 0), glm::vec2(0, n)}});
-      ++index;
+      mesh_.property(pieces_, f) =
+          std::move(pieces[static_cast<std::size_t>(f.idx())]);
     }
   }
   ~InputPieces() {
@@ -219,6 +259,17 @@ class InputPieces {
   }
   InputPieces(const InputPieces&) = delete;
   InputPieces& operator=(const InputPieces&) = delete;
+
+  // The pieces face f holds.
+  [[nodiscard]] const std::vector<InputPiece>& pieces_of(
+      Mesh::FaceHandle f) const {
+    return mesh_.property(pieces_, f);
+  }
+
+  // The input vertex that vertex v is.
+  [[nodiscard]] std::uint32_t input_vertex(Mesh::VertexHandle v) const {
+    return mesh_.property(input_vertex_, v);
+  }
 
   // Whether the pieces held by the faces round ci.v0, and v0 itself, lie
   // within `distance_mm` of the triangles that replace them (`fresh`);
@@ -303,15 +354,7 @@ class InputPieces {
   }
 
  private:
-  // A sub-triangle of input triangle `index`'s lattice, in grid
-  // coordinates (exact in floats: halves of at most 16 steps, three times),
-  // `side_steps` a side; a grid point (side 0, at uv[0]); or input vertex
-  // `index` (side -1).
-  struct Piece {
-    std::uint32_t index = 0;
-    float side_steps = 0.0F;
-    std::array<glm::vec2, 3> uv{};
-  };
+  using Piece = InputPiece;
 
   [[nodiscard]] Corners corners_of(std::uint32_t triangle) const {
     const auto& t = input_.triangles[triangle];
@@ -325,7 +368,7 @@ class InputPieces {
 
   Mesh& mesh_;
   const TriangleMesh& input_;
-  std::vector<std::uint8_t> steps_;  // per input triangle: its grid
+  const std::vector<std::uint8_t>& steps_;  // per input triangle: its grid
   OpenMesh::FPropHandleT<std::vector<Piece>> pieces_;
   OpenMesh::VPropHandleT<std::uint32_t> input_vertex_;
   std::vector<std::pair<Piece, std::size_t>> pending_;
@@ -696,39 +739,249 @@ double sampled_distance(const TriangleMesh& from, SurfaceDistance& to,
   return worst;
 }
 
-// One decimation whose vetoes aim at `aim` times the tolerance.
-Decimated decimate_once(const TriangleMesh& input,
-                        const DecimateOptions& options, double aim) {
-  Decimated out;
-  DecimateStats& stats = out.stats;
-  stats.triangles_before = input.triangles.size();
-  Mesh mesh = to_openmesh(input);
-  // The decimaters request and release the status flags; holding them here
-  // keeps the deleted marks alive for garbage_collection.
+// Holds the status flags and normals the decimaters use. The decimaters
+// request and release the status flags themselves; holding them here keeps
+// the deleted marks alive for garbage_collection.
+void prepare(Mesh& mesh) {
   mesh.request_vertex_status();
   mesh.request_edge_status();
   mesh.request_face_status();
   mesh.request_face_normals();
   mesh.update_face_normals();
-  InputPieces samples(mesh, input);
+}
+
+std::vector<std::uint32_t> identity(std::size_t count) {
+  std::vector<std::uint32_t> out(count);
+  for (std::size_t i = 0; i < count; ++i)
+    out[i] = static_cast<std::uint32_t>(i);
+  return out;
+}
+
+// One side of a mesh cut in two for decimation on two threads: the
+// triangles wholly on that side and those that cross the cut, which both
+// halves hold and neither changes (their corners are locked).
+struct Half {
+  TriangleMesh mesh;
+  std::vector<std::uint32_t> input_vertex;  // per vertex of `mesh`
+  std::vector<std::uint32_t> input_face;    // per triangle of `mesh`
+  std::vector<char> on_cut;                 // per triangle: crosses the cut
+  std::vector<char> locked;                 // per vertex: a corner of one
+};
+
+// Cuts `input` across its longest side at the median vertex. A collapse
+// whose removed vertex is not locked changes only triangles wholly on its
+// side, and their new corners stay on that side: strictly below the cut or
+// at or above it. So the new triangles of one half cannot meet a triangle of
+// the other (a plane parts them), and each half's intersection guard needs
+// only its own triangles and those on the cut.
+std::array<Half, 2> split_in_halves(const TriangleMesh& input) {
+  const Box box = bounds(input);
+  const glm::dvec3 size = box.size();
+  const int axis =
+      size.x >= size.y && size.x >= size.z ? 0 : (size.y >= size.z ? 1 : 2);
+  std::vector<double> along;
+  along.reserve(input.vertices.size());
+  for (const glm::dvec3& p : input.vertices) along.push_back(p[axis]);
+  const auto middle =
+      along.begin() + static_cast<std::ptrdiff_t>(along.size() / 2);
+  std::nth_element(along.begin(), middle, along.end());
+  const double cut = *middle;
+  const auto side = [&](std::uint32_t v) {
+    return input.vertices[v][axis] < cut ? 0 : 1;
+  };
+  constexpr int kOnCut = 2;
+  std::vector<int> kind(input.triangles.size());
+  std::vector<char> locked(input.vertices.size(), 0);
+  for (std::size_t i = 0; i < input.triangles.size(); ++i) {
+    const auto& t = input.triangles[i];
+    const int s = side(t[0]);
+    if (side(t[1]) == s && side(t[2]) == s) {
+      kind[i] = s;
+    } else {
+      kind[i] = kOnCut;
+      for (const std::uint32_t v : t) locked[v] = 1;
+    }
+  }
+  std::array<Half, 2> halves;
+  for (int h = 0; h < 2; ++h) {
+    Half& half = halves[static_cast<std::size_t>(h)];
+    std::vector<std::uint32_t> local(input.vertices.size(),
+                                     std::numeric_limits<std::uint32_t>::max());
+    for (std::size_t i = 0; i < input.triangles.size(); ++i) {
+      if (kind[i] != h && kind[i] != kOnCut) continue;
+      std::array<std::uint32_t, 3> t{};
+      for (std::size_t c = 0; c < 3; ++c) {
+        const std::uint32_t v = input.triangles[i][c];
+        if (local[v] == std::numeric_limits<std::uint32_t>::max()) {
+          local[v] = static_cast<std::uint32_t>(half.mesh.vertices.size());
+          half.mesh.vertices.push_back(input.vertices[v]);
+          half.input_vertex.push_back(v);
+          half.locked.push_back(locked[v]);
+        }
+        t[c] = local[v];
+      }
+      half.mesh.triangles.push_back(t);
+      half.input_face.push_back(static_cast<std::uint32_t>(i));
+      half.on_cut.push_back(kind[i] == kOnCut ? 1 : 0);
+    }
+  }
+  return halves;
+}
+
+// What decimation left of a half: its triangles by input vertex, the input
+// pieces each holds, and which cross the cut.
+struct DecimatedHalf {
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<std::vector<InputPiece>> pieces;
+  std::vector<char> on_cut;
+  std::size_t collapses = 0;
+  std::size_t refused = 0;
+};
+
+DecimatedHalf decimate_half(const Half& half, const TriangleMesh& input,
+                            const SurfaceDistance& input_index,
+                            const std::vector<std::uint8_t>& steps,
+                            const DecimateOptions& options, double aim,
+                            const std::function<void(std::size_t)>& tell) {
+  Mesh mesh = to_openmesh(half.mesh);
+  prepare(mesh);
+  for (const auto v : mesh.vertices()) {
+    if (half.locked[static_cast<std::size_t>(v.idx())] != 0) {
+      mesh.status(v).set_locked(true);
+    }
+  }
+  InputPieces samples(mesh, input, steps, half.input_vertex,
+                      whole_pieces(steps, half.input_face));
   ModIntersectionGuardT<Mesh> guard(mesh);
   ModIntersectionGuardT<Mesh>* guarded = nullptr;
   if (options.refuse_intersections) {
     guard.initialize();
     guarded = &guard;
   }
+  // The input's index is shared; each thread keeps its own query state.
+  SurfaceDistance input_surface = input_index.sharing();
+  DecimatedHalf out;
+  out.collapses =
+      run(mesh, input_surface, samples, options, aim, true, 0, guarded, tell);
+  out.refused = guard.refused();
+  for (const auto f : mesh.faces()) {
+    if (mesh.status(f).deleted()) continue;
+    std::array<std::uint32_t, 3> t{};
+    std::size_t k = 0;
+    for (const auto v : mesh.fv_range(f)) t[k++] = samples.input_vertex(v);
+    out.triangles.push_back(t);
+    out.pieces.push_back(samples.pieces_of(f));
+    // A triangle on the cut keeps its face and its corners.
+    out.on_cut.push_back(half.on_cut[static_cast<std::size_t>(f.idx())]);
+  }
+  return out;
+}
+
+// The mesh to go on from: the input, or the two halves decimated on their
+// own and put together, with the input pieces each face holds and the input
+// vertex each vertex is.
+struct Start {
+  TriangleMesh mesh;
+  std::vector<std::uint32_t> input_vertex;
+  std::vector<std::vector<InputPiece>> pieces;
+  std::size_t collapses = 0;
+  std::size_t refused = 0;
+};
+
+Start decimate_halves(const TriangleMesh& input,
+                      const SurfaceDistance& input_surface,
+                      const std::vector<std::uint8_t>& steps,
+                      const DecimateOptions& options, double aim,
+                      const std::function<void(std::size_t)>& tell) {
+  const std::array<Half, 2> halves = split_in_halves(input);
+  std::array<DecimatedHalf, 2> done;
+  // Only the first half tells the progress (the callback need not be
+  // thread-safe); it adds what the second has done so far.
+  std::atomic<std::size_t> second{0};
+  tbb::parallel_invoke(
+      [&] {
+        done[0] = decimate_half(halves[0], input, input_surface, steps, options,
+                                aim, [&](std::size_t collapses) {
+                                  if (tell) tell(collapses + second.load());
+                                });
+      },
+      [&] {
+        done[1] = decimate_half(
+            halves[1], input, input_surface, steps, options, aim,
+            [&](std::size_t collapses) { second.store(collapses); });
+      });
+  // The triangles of the first half, then those of the second but the ones
+  // on the cut, which the first already has; the vertices in input order.
+  Start start;
+  std::vector<std::uint32_t> local(input.vertices.size(),
+                                   std::numeric_limits<std::uint32_t>::max());
+  for (std::size_t h = 0; h < 2; ++h) {
+    for (std::size_t i = 0; i < done[h].triangles.size(); ++i) {
+      if (h == 1 && done[h].on_cut[i] != 0) continue;
+      for (const std::uint32_t v : done[h].triangles[i]) local[v] = 0;
+    }
+  }
+  for (std::uint32_t v = 0; v < local.size(); ++v) {
+    if (local[v] == std::numeric_limits<std::uint32_t>::max()) continue;
+    local[v] = static_cast<std::uint32_t>(start.mesh.vertices.size());
+    start.mesh.vertices.push_back(input.vertices[v]);
+    start.input_vertex.push_back(v);
+  }
+  for (std::size_t h = 0; h < 2; ++h) {
+    for (std::size_t i = 0; i < done[h].triangles.size(); ++i) {
+      if (h == 1 && done[h].on_cut[i] != 0) continue;
+      const auto& t = done[h].triangles[i];
+      start.mesh.triangles.push_back({local[t[0]], local[t[1]], local[t[2]]});
+      start.pieces.push_back(std::move(done[h].pieces[i]));
+    }
+    start.collapses += done[h].collapses;
+    start.refused += done[h].refused;
+  }
+  return start;
+}
+
+// One decimation whose vetoes aim at `aim` times the tolerance.
+Decimated decimate_once(const TriangleMesh& input,
+                        const DecimateOptions& options, double aim) {
+  Decimated out;
+  DecimateStats& stats = out.stats;
+  stats.triangles_before = input.triangles.size();
   // Halfedge collapses remove two triangles each; about as many collapses
   // as a third of the triangles is what a tube model allows at 0.05 mm.
   const double expected = std::max(1.0, 0.35 * double(input.triangles.size()));
   std::size_t done = 0;
-  const auto tell = [&](std::size_t collapses) {
+  const std::function<void(std::size_t)> tell = [&](std::size_t collapses) {
     if (options.progress) {
       options.progress(std::min(1.0, double(done + collapses) / expected));
     }
   };
+  const std::vector<std::uint8_t> steps = input_steps(input);
+  // A large mesh is decimated in two halves at once, then as a whole for
+  // what is left; a cap on the triangles is reached on the whole mesh.
+  const bool halved = !options.max_triangles &&
+                      input.triangles.size() >= options.halve_from_triangles;
   SurfaceDistance input_surface(input, options.tolerance_mm);
-  done = run(mesh, input_surface, samples, options, aim, true,
-             options.max_triangles.value_or(0), guarded, tell);
+  Start start;
+  if (halved) {
+    start = decimate_halves(input, input_surface, steps, options, aim, tell);
+  }
+  const TriangleMesh& from = halved ? start.mesh : input;
+  Mesh mesh = to_openmesh(from);
+  prepare(mesh);
+  InputPieces samples(
+      mesh, input, steps,
+      halved ? start.input_vertex : identity(input.vertices.size()),
+      halved ? std::move(start.pieces)
+             : whole_pieces(steps, identity(input.triangles.size())));
+  ModIntersectionGuardT<Mesh> guard(mesh);
+  ModIntersectionGuardT<Mesh>* guarded = nullptr;
+  if (options.refuse_intersections) {
+    guard.initialize();
+    guarded = &guard;
+  }
+  done = start.collapses;
+  done += run(mesh, input_surface, samples, options, aim, true,
+              options.max_triangles.value_or(0), guarded, tell);
   std::size_t faces = input.triangles.size() - 2 * done;
   if (options.max_triangles && faces > *options.max_triangles) {
     // OpenMesh's modules initialise over every face, deleted ones too.
@@ -747,7 +1000,7 @@ Decimated decimate_once(const TriangleMesh& input,
         collapse_short_edges(mesh, input_surface, samples, options, guarded);
   }
   stats.collapses = done;
-  stats.refused_intersections = guard.refused();
+  stats.refused_intersections = start.refused + guard.refused();
   out.mesh = from_openmesh(mesh);
   stats.short_edges_left = count_short_edges(out.mesh, options.min_edge_mm);
   stats.triangles_after = out.mesh.triangles.size();

@@ -187,14 +187,14 @@ bool round_new_points(ExactMesh& mesh) {
 // (ABOP fig. 1.24b) spent most of their time in GMP otherwise. Kept only
 // if the result is a closed, self-intersection-free surface.
 std::optional<TriangleMesh> mended(const TriangleMesh& rounded) {
-  TriangleMesh out =
-      round_and_repair(rounded,
-                       {.precision = {.kind = Precision::Kind::Double}})
-          .mesh;
+  Rounded repaired = round_and_repair(
+      rounded, {.precision = {.kind = Precision::Kind::Double}});
+  TriangleMesh& out = repaired.mesh;
   const std::optional<InexactMesh> check = to_surface_mesh<InexactMesh>(out);
+  // A clean repair was last tested as it is returned: no face pair meets.
   if (!check || check->number_of_faces() == 0 || !CGAL::is_closed(*check) ||
       !CGAL::is_valid_polygon_mesh(*check) ||
-      PMP::does_self_intersect(*check)) {
+      (!repaired.clean && PMP::does_self_intersect(*check))) {
     return std::nullopt;
   }
   // Rebuilding intersecting faces can delete whole thin pieces (leaf plates
@@ -205,7 +205,7 @@ std::optional<TriangleMesh> mended(const TriangleMesh& rounded) {
       kMendVolumeSlack * std::fabs(before)) {
     return std::nullopt;
   }
-  return out;
+  return std::move(out);
 }
 
 bool round_and_mend(ExactMesh& mesh) {

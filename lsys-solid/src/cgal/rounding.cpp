@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "conversion.hpp"
+#include "triangle_pair.hpp"
 #include "vertex_key.hpp"
 
 namespace lsolid {
@@ -40,6 +41,28 @@ void snap(InexactMesh& mesh, const Precision& precision) {
 
 std::size_t count_faces(const InexactMesh& mesh) {
   return mesh.number_of_faces();
+}
+
+// The faces as triangles of vertex indices, for intersecting_pairs (the
+// exact test CGAL's self_intersections makes, on the threads).
+// @pre no face or vertex is marked removed (collect_garbage).
+std::vector<IndexedTriangle> indexed_triangles(const InexactMesh& mesh) {
+  CGAL_precondition(!mesh.has_garbage());
+  std::vector<IndexedTriangle> out;
+  out.reserve(mesh.number_of_faces());
+  for (const auto f : mesh.faces()) {
+    IndexedTriangle t;
+    std::size_t k = 0;
+    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+      if (k == 3) break;
+      const InexactPoint& p = mesh.point(v);
+      t.ids[k] = static_cast<std::uint32_t>(v.idx());
+      t.points[k] = glm::dvec3(p.x(), p.y(), p.z());
+      ++k;
+    }
+    out.push_back(t);
+  }
+  return out;
 }
 
 }  // namespace
@@ -76,9 +99,8 @@ Rounded round_and_repair(const TriangleMesh& input,
     snap(mesh, precision);
     stats.slivers_removed += before - std::min(before, count_faces(mesh));
 
-    std::vector<std::pair<InexactMesh::Face_index, InexactMesh::Face_index>>
-        pairs;
-    PMP::self_intersections(mesh, std::back_inserter(pairs));
+    const std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs =
+        intersecting_pairs(indexed_triangles(mesh));
     bool has_degenerate = false;
     for (const auto f : mesh.faces()) {
       if (PMP::is_degenerate_triangle_face(f, mesh)) {
@@ -92,8 +114,8 @@ Rounded round_and_repair(const TriangleMesh& input,
     }
     std::set<InexactMesh::Face_index> bad;
     for (const auto& [a, b] : pairs) {
-      bad.insert(a);
-      bad.insert(b);
+      bad.insert(InexactMesh::Face_index(a));
+      bad.insert(InexactMesh::Face_index(b));
     }
     stats.faces_rebuilt += bad.size();
     if (!bad.empty()) {

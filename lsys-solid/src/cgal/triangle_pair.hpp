@@ -5,6 +5,8 @@
 #include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <utility>
+#include <vector>
 
 namespace lsolid {
 
@@ -24,5 +26,14 @@ struct IndexedTriangle {
 /// vertices, or a degenerate one, count as meeting.
 [[nodiscard]] bool triangles_intersect(const IndexedTriangle& a,
                                        const IndexedTriangle& b);
+
+/// The pairs of `triangles` (of one mesh) that meet anywhere but at the
+/// vertices or the edge they share, as CGAL's self-intersection test
+/// (PMP::self_intersections) finds them on the same triangles: a degenerate
+/// triangle is paired with itself and with no other. Each pair smaller
+/// index first, sorted. The pairs whose boxes meet are tested on oneTBB's
+/// threads.
+[[nodiscard]] std::vector<std::pair<std::uint32_t, std::uint32_t>>
+intersecting_pairs(const std::vector<IndexedTriangle>& triangles);
 
 }  // namespace lsolid

@@ -54,6 +54,11 @@ using Sign = CGAL::Sign;
 
 Point3 point3(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
 
+// Box searches scan ranges under this many boxes rather than split them
+// further, as CGAL's self-intersection test does (its default, 10, cost the
+// union's box searches half again as much).
+constexpr std::ptrdiff_t kBoxCutoff = 2000;
+
 // A degeneracy or a broken invariant: the union gives up, and the caller
 // shifts an operand or falls back to the corefinement.
 struct Failure {
@@ -524,7 +529,7 @@ class Engine {
         [&](const FaceBox& x, const FaceBox& y) {
           pairs.emplace_back(x.info(), y.info());
         },
-        std::ptrdiff_t(10), CGAL::Box_intersection_d::CLOSED);
+        kBoxCutoff, CGAL::Box_intersection_d::CLOSED);
     std::sort(pairs.begin(), pairs.end());
     counters_.face_pairs = pairs.size();
     const std::size_t chunks = (pairs.size() + 255) / 256;
@@ -1047,9 +1052,10 @@ bool rounding_kept_valid(const PairUnion& u) {
   const auto add = [&](const Box& a, const Box& b) {
     pairs.emplace_back(a.info(), b.info());
   };
-  CGAL::box_self_intersection_d(changed.begin(), changed.end(), add);
+  CGAL::box_self_intersection_d(changed.begin(), changed.end(), add,
+                                kBoxCutoff);
   CGAL::box_intersection_d(changed.begin(), changed.end(), unchanged.begin(),
-                           unchanged.end(), add);
+                           unchanged.end(), add, kBoxCutoff);
   std::atomic<bool> ok{true};
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs.size(), 256),
                     [&](const tbb::blocked_range<std::size_t>& range) {

@@ -4,7 +4,6 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <vector>
 
 #include "cgal/exact_checks.hpp"
@@ -48,12 +47,9 @@ TEST(TrianglePair, FindsThePairsOfOverlappingBoxesAsCgalDoes) {
               exact_checks(mesh, true, true).self_intersecting_pairs)
         << by.x << " " << by.y << " " << by.z;
     for (const auto& [f, g] : pairs) {
-      EXPECT_LT(f, g);
       // Each box is a closed surface: a pair takes one triangle of each.
-      EXPECT_LT(f, 12u);
-      EXPECT_GE(g, 12u);
+      EXPECT_TRUE((f < 12u) != (g < 12u)) << f << " " << g;
     }
-    EXPECT_TRUE(std::is_sorted(pairs.begin(), pairs.end()));
   }
   EXPECT_TRUE(intersecting_pairs(indexed(two_boxes({3, 0, 0}))).empty());
 }

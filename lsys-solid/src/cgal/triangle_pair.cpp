@@ -140,8 +140,10 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> intersecting_pairs(
                         degenerate[i] = is_degenerate(triangles[i]) ? 1 : 0;
                       }
                     });
-  // The search sorts pointers to the boxes, as CGAL's own test does: boxes
-  // with explicit ids are copied and sorted by value, a third slower.
+  // The search sorts pointers to the boxes, as CGAL's own test does (boxes
+  // with explicit ids are copied and sorted by value, a third slower); with
+  // the same boxes in the same order, it reports the same pairs in the same
+  // order and orientation.
   using Box = CGAL::Box_intersection_d::Box_with_info_d<
       double, 3, std::uint32_t, CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS>;
   std::vector<Box> boxes;
@@ -190,13 +192,11 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> intersecting_pairs(
   CGAL::box_self_intersection_d(
       pointers.begin(), pointers.end(),
       [&](const Box* a, const Box* b) {
-        batch.emplace_back(std::min(a->info(), b->info()),
-                           std::max(a->info(), b->info()));
+        batch.emplace_back(a->info(), b->info());
         if (batch.size() == kBatch) test();
       },
       kCutoff);
   test();
-  std::sort(out.begin(), out.end());
   return out;
 }
 

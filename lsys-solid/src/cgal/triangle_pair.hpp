@@ -29,10 +29,11 @@ struct IndexedTriangle {
 
 /// The pairs of `triangles` (of one mesh) that meet anywhere but at the
 /// vertices or the edge they share, as CGAL's self-intersection test
-/// (PMP::self_intersections) finds them on the same triangles: a degenerate
-/// triangle is paired with itself and with no other. Each pair smaller
-/// index first, sorted. The pairs whose boxes meet are tested on oneTBB's
-/// threads.
+/// (PMP::self_intersections) finds them on a Surface_mesh of the same faces
+/// and vertices, in the same order and orientation: first each degenerate
+/// triangle paired with itself (and with no other), then the pairs in the
+/// order CGAL's box search meets them. The pairs whose boxes meet are
+/// tested on oneTBB's threads.
 [[nodiscard]] std::vector<std::pair<std::uint32_t, std::uint32_t>>
 intersecting_pairs(const std::vector<IndexedTriangle>& triangles);
 

@@ -141,6 +141,22 @@ TEST(Decimate, DecimatesTheBushInHalvesAsWellAsWholeOnAnyNumberOfThreads) {
   EXPECT_EQ(alone.mesh.triangles, halves.mesh.triangles);
 }
 
+TEST(Decimate, StopsBothHalvesWhenTheProgressCallbackThrows) {
+  // The viewer cancels a build by throwing from the progress callback,
+  // which only the first half calls; its exception comes out, not the
+  // second half's.
+  struct Cancelled {};
+  int calls = 0;
+  EXPECT_THROW((void)decimate(bush_union(5), {.halve_from_triangles = 0,
+                                              .progress =
+                                                  [&](double) {
+                                                    ++calls;
+                                                    throw Cancelled{};
+                                                  }}),
+               Cancelled);
+  EXPECT_EQ(calls, 1);
+}
+
 TEST(Decimate, KeepsTheEdgesAlongAConcaveCreaseWithinTheToleranceInOneRun) {
   // Aono and Kunii's sympodial tree, ABOP fig. 2.7c at its full n: with the
   // removed vertices alone measured, a point of an edge along the crease

@@ -896,19 +896,32 @@ Start decimate_halves(const TriangleMesh& input,
   const std::array<Half, 2> halves = split_in_halves(input);
   std::array<DecimatedHalf, 2> done;
   // Only the first half tells the progress (the callback need not be
-  // thread-safe); it adds what the second has done so far.
+  // thread-safe); it adds what the second has done so far. A callback that
+  // throws (the viewer cancelling a build) stops the second half too, at
+  // its next report, rather than after its last collapse; the first
+  // exception is the one rethrown.
   std::atomic<std::size_t> second{0};
+  std::atomic<bool> stopped{false};
+  struct Stopped {};
   tbb::parallel_invoke(
       [&] {
         done[0] = decimate_half(halves[0], input, input_surface, steps, options,
                                 aim, [&](std::size_t collapses) {
-                                  if (tell) tell(collapses + second.load());
+                                  if (!tell) return;
+                                  try {
+                                    tell(collapses + second.load());
+                                  } catch (...) {
+                                    stopped = true;
+                                    throw;
+                                  }
                                 });
       },
       [&] {
-        done[1] = decimate_half(
-            halves[1], input, input_surface, steps, options, aim,
-            [&](std::size_t collapses) { second.store(collapses); });
+        done[1] = decimate_half(halves[1], input, input_surface, steps, options,
+                                aim, [&](std::size_t collapses) {
+                                  if (stopped) throw Stopped{};
+                                  second.store(collapses);
+                                });
       });
   // The triangles of the first half, then those of the second but the ones
   // on the cut, which the first already has; the vertices in input order.

@@ -15,7 +15,11 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 
 #include <iterator>
+#include <optional>
+#include <utility>
 #include <vector>
+
+#include "conversion.hpp"
 
 namespace lsolid {
 namespace {
@@ -37,23 +41,6 @@ struct CountingIterator {
     return *this;
   }
 };
-
-// Adds the faces to `sm` as they are, the points in order; false if a face
-// could not be added (then `sm` holds a part of them).
-bool added_as_they_stand(const std::vector<InexactPoint>& points,
-                         const std::vector<std::vector<std::size_t>>& polygons,
-                         InexactMesh& sm) {
-  std::vector<InexactMesh::Vertex_index> vertices;
-  vertices.reserve(points.size());
-  for (const InexactPoint& p : points) vertices.push_back(sm.add_vertex(p));
-  for (const auto& f : polygons) {
-    if (sm.add_face(vertices[f[0]], vertices[f[1]], vertices[f[2]]) ==
-        InexactMesh::null_face()) {
-      return false;
-    }
-  }
-  return true;
-}
 
 }  // namespace
 
@@ -77,15 +64,19 @@ ExactChecks exact_checks(const TriangleMesh& input, bool is_edge_manifold,
   }
   if (!is_edge_manifold || polygons.empty()) return r;
   try {
-    InexactMesh sm;
     // A closed manifold (validate's own counts: every edge two faces of
     // opposite directions, no pinched vertex) with every face kept is a
-    // polygon mesh as it stands: its faces go in directly. CGAL's test of
-    // the soup, which its conversion repeats as a precondition, was a fifth
-    // of the check of the bush at n = 7.
-    if (!is_closed_manifold || r.degenerate_faces > 0 ||
-        !added_as_they_stand(points, polygons, sm)) {
-      sm.clear();
+    // polygon mesh as it stands: to_surface_mesh adds its faces directly.
+    // CGAL's test of the soup, which its conversion repeats as a
+    // precondition, was a fifth of the check of the bush at n = 7.
+    std::optional<InexactMesh> direct;
+    if (is_closed_manifold && r.degenerate_faces == 0) {
+      direct = to_surface_mesh<InexactMesh>(mesh);
+    }
+    InexactMesh sm;
+    if (direct) {
+      sm = std::move(*direct);
+    } else {
       // Pinched vertices are split so that a halfedge mesh can hold the
       // faces; faces that met only there then count as intersecting, as
       // they touch.

@@ -52,15 +52,9 @@ std::array<Point, 3> shared_first(const IndexedTriangle& t,
           point(t.points[order[2]])};
 }
 
-}  // namespace
-
-bool is_degenerate(const IndexedTriangle& t) {
-  return CGAL::collinear(point(t.points[0]), point(t.points[1]),
-                         point(t.points[2]));
-}
-
-bool triangles_intersect(const IndexedTriangle& a, const IndexedTriangle& b) {
-  if (is_degenerate(a) || is_degenerate(b)) return true;
+// triangles_intersect for triangles neither of which is degenerate.
+bool proper_triangles_intersect(const IndexedTriangle& a,
+                                const IndexedTriangle& b) {
   int count = 0;
   const std::array<Point, 3> p = shared_first(a, b, count);
   int count_b = 0;
@@ -126,6 +120,18 @@ bool triangles_intersect(const IndexedTriangle& a, const IndexedTriangle& b) {
   }
 }
 
+}  // namespace
+
+bool is_degenerate(const IndexedTriangle& t) {
+  return CGAL::collinear(point(t.points[0]), point(t.points[1]),
+                         point(t.points[2]));
+}
+
+bool triangles_intersect(const IndexedTriangle& a, const IndexedTriangle& b) {
+  return is_degenerate(a) || is_degenerate(b) ||
+         proper_triangles_intersect(a, b);
+}
+
 std::vector<std::pair<std::uint32_t, std::uint32_t>> intersecting_pairs(
     const std::vector<IndexedTriangle>& triangles) {
   using Pair = std::pair<std::uint32_t, std::uint32_t>;
@@ -159,10 +165,11 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> intersecting_pairs(
     }
     boxes.emplace_back(b, i);
   }
-  // The pairs whose boxes meet, tested in batches on the threads: CGAL's
-  // own test walks the halfedges round both faces and checks each triangle
-  // for degeneracy, exactly, for every pair (a third of blog tree B's
-  // rounding and check at n = 9).
+  // The pairs whose boxes meet, tested in batches on the threads, neither
+  // triangle degenerate (decided once above): CGAL's own test walks the
+  // halfedges round both faces and checks each triangle for degeneracy,
+  // exactly, for every pair (a third of blog tree B's rounding and check at
+  // n = 9).
   constexpr std::size_t kBatch = 1U << 16U;
   std::vector<Pair> batch;
   std::vector<char> meets;
@@ -172,8 +179,8 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> intersecting_pairs(
         tbb::blocked_range<std::size_t>(0, batch.size(), 512),
         [&](const tbb::blocked_range<std::size_t>& range) {
           for (std::size_t i = range.begin(); i < range.end(); ++i) {
-            meets[i] = triangles_intersect(triangles[batch[i].first],
-                                           triangles[batch[i].second])
+            meets[i] = proper_triangles_intersect(triangles[batch[i].first],
+                                                  triangles[batch[i].second])
                            ? 1
                            : 0;
           }

@@ -33,6 +33,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <limits>
+#include <numeric>
 #include <queue>
 #include <tuple>
 #include <unordered_set>
@@ -752,9 +753,17 @@ void prepare(Mesh& mesh) {
 
 std::vector<std::uint32_t> identity(std::size_t count) {
   std::vector<std::uint32_t> out(count);
-  for (std::size_t i = 0; i < count; ++i)
-    out[i] = static_cast<std::uint32_t>(i);
+  std::iota(out.begin(), out.end(), 0U);
   return out;
+}
+
+// The guard to pass to the runs: `guard`, indexed, or none if the options
+// let collapses intersect.
+ModIntersectionGuardT<Mesh>* guarding(ModIntersectionGuardT<Mesh>& guard,
+                                      const DecimateOptions& options) {
+  if (!options.refuse_intersections) return nullptr;
+  guard.initialize();
+  return &guard;
 }
 
 // One side of a mesh cut in two for decimation on two threads: the
@@ -853,11 +862,7 @@ DecimatedHalf decimate_half(const Half& half, const TriangleMesh& input,
   InputPieces samples(mesh, input, steps, half.input_vertex,
                       whole_pieces(steps, half.input_face));
   ModIntersectionGuardT<Mesh> guard(mesh);
-  ModIntersectionGuardT<Mesh>* guarded = nullptr;
-  if (options.refuse_intersections) {
-    guard.initialize();
-    guarded = &guard;
-  }
+  ModIntersectionGuardT<Mesh>* const guarded = guarding(guard, options);
   // The input's index is shared; each thread keeps its own query state.
   SurfaceDistance input_surface = input_index.sharing();
   DecimatedHalf out;
@@ -987,11 +992,7 @@ Decimated decimate_once(const TriangleMesh& input,
       halved ? std::move(start.pieces)
              : whole_pieces(steps, identity(input.triangles.size())));
   ModIntersectionGuardT<Mesh> guard(mesh);
-  ModIntersectionGuardT<Mesh>* guarded = nullptr;
-  if (options.refuse_intersections) {
-    guard.initialize();
-    guarded = &guard;
-  }
+  ModIntersectionGuardT<Mesh>* const guarded = guarding(guard, options);
   done = start.collapses;
   done += run(mesh, input_surface, samples, options, aim, true,
               options.max_triangles.value_or(0), guarded, tell);

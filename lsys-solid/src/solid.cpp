@@ -651,6 +651,12 @@ Solid build_from_skeleton(const lsys::Grammar& grammar,
   refuse_a_scale_below_a_micrometre(grammar, skeleton, print);
   double mm_per_unit = estimate_scale(skeleton, print);
   for (int pass = 0; pass < kSizePasses; ++pass) {
+    // The first pass of a sized build only measures: its parts are not
+    // tested for cutting themselves (most of their time), which leaves
+    // their box as it is unless a hull junction at the very edge would be
+    // left to the union; the pass that builds is always tested and always
+    // measured again.
+    const bool measuring = sized && pass == 0;
     scaled = scale_skeleton(skeleton, mm_per_unit, print.wall_mm);
     refuse_beyond_a_kilometre(grammar, scaled);
     const std::optional<SkeletonPlane> plane =
@@ -666,7 +672,8 @@ Solid build_from_skeleton(const lsys::Grammar& grammar,
           {.wall_mm = print.wall_mm,
            .tolerance_mm = print.tolerance_mm,
            .split_colors = options.colors || options.multi_material,
-           .unite_coplanar_polygons = unite_coplanar});
+           .unite_coplanar_polygons = unite_coplanar,
+           .check_self_intersections = !measuring});
     };
     const bool maybe_flat = plane && print.profile == Profile::Flat;
     const PlacementOptions placing{.base = print.base,
@@ -690,7 +697,10 @@ Solid build_from_skeleton(const lsys::Grammar& grammar,
     const glm::dvec3 size = is_flat ? extent(flat) : bounds(parts.parts).size();
     actual =
         options.print.height_mm ? size.z : std::max({size.x, size.y, size.z});
-    if (std::fabs(actual - wanted) <= kSizeTolerance * wanted) break;
+    if (std::fabs(actual - wanted) <= kSizeTolerance * wanted) {
+      if (!measuring) break;
+      continue;  // built again, tested, at the same scale
+    }
     mm_per_unit = scaled.mm_per_unit * wanted / actual;
   }
   if (sized && !parts.parts.empty() &&

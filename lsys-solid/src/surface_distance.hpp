@@ -9,7 +9,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 #include <memory>
-#include <unordered_map>
+#include <span>
 #include <vector>
 
 #include "cell_grid.hpp"
@@ -78,7 +78,21 @@ void for_each_cell_through(const CellGrid& grid, const glm::dvec3& a,
       self(self, qr, rp, pq);
       return;
     }
+    // A centre farther than `reach` from the piece's plane is farther from
+    // the piece: most of a sliver's box is, and the plane's distance costs a
+    // dot product where the closest point costs a dozen. A thin piece (its
+    // normal ill conditioned) skips this test; the margin covers rounding.
+    const glm::dvec3 n = glm::cross(q - p, r - p);
+    const double length = glm::length(n);
+    const double longest =
+        std::max({glm::dot(q - p, q - p), glm::dot(r - q, r - q),
+                  glm::dot(p - r, p - r)});
+    const bool planar = length > 1e-3 * longest && length > 0.0;
+    const glm::dvec3 unit = planar ? n / length : glm::dvec3(0.0);
+    const double offset = glm::dot(unit, p);
+    const double slab = reach * (1.0 + 1e-9) + 1e-9 * grid.cell_mm();
     grid.for_each(lo, hi, [&](std::uint64_t key, const glm::dvec3& centre) {
+      if (std::abs(glm::dot(unit, centre) - offset) > slab) return;
       const glm::dvec3 d = closest_point_on_triangle(centre, p, q, r) - centre;
       if (glm::dot(d, d) <= reach * reach) keys.push_back(key);
     });
@@ -103,47 +117,7 @@ class SurfaceDistance {
   /// branch long from it (twice the mean edge was 37 mm there: thousands of
   /// triangles a cell, each query tried them all; 1.2 mm by area, and the
   /// decimation took 3.2 s instead of 8.6 s, with the same answers).
-  explicit SurfaceDistance(const TriangleMesh& mesh, double min_cell_mm = 0.0)
-      : mesh_(mesh), seen_(mesh.triangles.size(), 0) {
-    auto index = std::make_shared<Index>();
-    CellGrid& grid = index->grid;
-    double area = 0.0;
-    for (const auto& t : mesh.triangles) {
-      const glm::dvec3& a = mesh.vertices[t[0]];
-      area += glm::length(glm::cross(mesh.vertices[t[1]] - a,
-                                     mesh.vertices[t[2]] - a)) /
-              2.0;
-    }
-    grid = CellGrid(std::max(
-        {min_cell_mm,
-         mesh.triangles.empty()
-             ? 1.0
-             : std::sqrt(area / static_cast<double>(mesh.triangles.size())),
-         1e-6}));
-    for (std::uint32_t i = 0; i < mesh.triangles.size(); ++i) {
-      const auto& t = mesh.triangles[i];
-      const glm::dvec3& a = mesh.vertices[t[0]];
-      const glm::dvec3& b = mesh.vertices[t[1]];
-      const glm::dvec3& c = mesh.vertices[t[2]];
-      const glm::dvec3 lo = glm::min(glm::min(a, b), c);
-      const glm::dvec3 hi = glm::max(glm::max(a, b), c);
-      const double cells = grid.count(lo, hi);
-      if (cells > kHugeCells) {
-        index->large.push_back(i);  // tested by every query
-      } else if (cells > kLargeCells) {
-        // A long sliver across many cells, such as the flat underside's:
-        // only the cells it passes through.
-        for_each_cell_through(grid, a, b, c, [&](std::uint64_t key) {
-          index->cells[key].push_back(i);
-        });
-      } else {
-        grid.for_each(lo, hi, [&](std::uint64_t key, const glm::dvec3&) {
-          index->cells[key].push_back(i);
-        });
-      }
-    }
-    index_ = std::move(index);
-  }
+  explicit SurfaceDistance(const TriangleMesh& mesh, double min_cell_mm = 0.0);
 
   /// A second querier of the same surface and index, with its own query
   /// state, for another thread: the index is read only.
@@ -163,7 +137,7 @@ class SurfaceDistance {
     double best = limit_mm * limit_mm;
     for (;;) {
       ++stamp_;
-      const auto test = [&](const std::vector<std::uint32_t>& cell) {
+      const auto test = [&](std::span<const std::uint32_t> cell) {
         for (const std::uint32_t i : cell) {
           if (seen_[i] == stamp_) continue;
           seen_[i] = stamp_;
@@ -173,8 +147,7 @@ class SurfaceDistance {
       test(index_->large);
       index_->grid.for_each(p - reach, p + reach,
                             [&](std::uint64_t key, const glm::dvec3&) {
-                              const auto it = index_->cells.find(key);
-                              if (it != index_->cells.end()) test(it->second);
+                              test(index_->cell(key));
                             });
       if (best <= reach * reach || reach >= limit_mm) break;
       reach = std::min(limit_mm, 2.0 * reach);
@@ -190,8 +163,11 @@ class SurfaceDistance {
                             const glm::dvec3& c, double distance_mm) {
     const double squared = distance_mm * distance_mm;
     // A triangle near all three corners is near `a`: its cells suffice.
+    const double reach = distance_mm + kBoundsSlackMm;
     return any_near(a, distance_mm, [&](std::uint32_t i) {
-      return squared_distance(i, a) <= squared &&
+      const Bounds& bounds = index_->bounds[i];
+      return bounds.may_reach(a, reach) && bounds.may_reach(b, reach) &&
+             bounds.may_reach(c, reach) && squared_distance(i, a) <= squared &&
              squared_distance(i, b) <= squared &&
              squared_distance(i, c) <= squared;
     });
@@ -200,8 +176,10 @@ class SurfaceDistance {
   /// True when some triangle lies within `distance_mm` of `p`.
   [[nodiscard]] bool within(const glm::dvec3& p, double distance_mm) {
     const double squared = distance_mm * distance_mm;
+    const double reach = distance_mm + kBoundsSlackMm;
     return any_near(p, distance_mm, [&](std::uint32_t i) {
-      return squared_distance(i, p) <= squared;
+      return index_->bounds[i].may_reach(p, reach) &&
+             squared_distance(i, p) <= squared;
     });
   }
 
@@ -224,9 +202,28 @@ class SurfaceDistance {
   [[nodiscard]] bool any_near(const glm::dvec3& p, double distance_mm,
                               Near near) {
     if (hint_ < mesh_.triangles.size() && near(hint_)) return true;
+    const glm::dvec3 lo = p - distance_mm;
+    const glm::dvec3 hi = p + distance_mm;
+    const CellGrid& grid = index_->grid;
+    if (grid.cell_of(lo) == grid.cell_of(hi)) {
+      // Most queries (0.05 mm round a point, in cells of about a triangle)
+      // fall in one cell, where no triangle is met twice: nothing to mark
+      // (reading each triangle's mark was a tenth of `covers`' samples).
+      for (const auto& list :
+           {index_->cell(CellGrid::key(grid.cell_of(lo))),
+            std::span<const std::uint32_t>(index_->large)}) {
+        for (const std::uint32_t i : list) {
+          if (near(i)) {
+            hint_ = i;
+            return true;
+          }
+        }
+      }
+      return false;
+    }
     ++stamp_;
     bool found = false;
-    const auto test = [&](const std::vector<std::uint32_t>& cell) {
+    const auto test = [&](std::span<const std::uint32_t> cell) {
       for (const std::uint32_t i : cell) {
         if (seen_[i] == stamp_) continue;
         seen_[i] = stamp_;
@@ -238,23 +235,95 @@ class SurfaceDistance {
       }
     };
     test(index_->large);
-    index_->grid.for_each(p - distance_mm, p + distance_mm,
-                          [&](std::uint64_t key, const glm::dvec3&) {
-                            if (found) return;
-                            const auto it = index_->cells.find(key);
-                            if (it != index_->cells.end()) test(it->second);
-                          });
+    grid.for_each(lo, hi, [&](std::uint64_t key, const glm::dvec3&) {
+      if (!found) test(index_->cell(key));
+    });
     return found;
   }
 
   static constexpr double kLargeCells = 8.0;
   static constexpr double kHugeCells = double(1 << 22);
 
-  // The triangles by cell, shared by the queriers of one surface.
+  // What rules a triangle out of a query cheaply, before the closest point
+  // (most of the decimation's distance tests, which ask "near all three
+  // corners?" and mostly meet triangles of the next face round a crease):
+  // its box and its plane. A point farther than r from either is farther
+  // than r from the triangle. The box is in floats rounded outwards; the
+  // plane is kept only for triangles whose normal is well conditioned (area
+  // at least a thousandth of the longest edge's square), so that rounding
+  // moves it by far less than kBoundsSlackMm, which every test adds: the
+  // filter only rejects triangles the closest point would reject too, and
+  // the answers, hence the bytes, stay as they were.
+  struct Bounds {
+    glm::vec3 lo;
+    glm::vec3 hi;
+    glm::dvec3 normal;  ///< unit, or zero: no plane test
+    double offset;      ///< dot(normal, a)
+
+    [[nodiscard]] bool may_reach(const glm::dvec3& p, double r) const {
+      if (p.x < lo.x - r || p.y < lo.y - r || p.z < lo.z - r ||
+          p.x > hi.x + r || p.y > hi.y + r || p.z > hi.z + r) {
+        return false;
+      }
+      return std::abs(glm::dot(normal, p) - offset) <= r;
+    }
+  };
+  static constexpr double kBoundsSlackMm = 1e-6;
+
+  [[nodiscard]] static Bounds bounds_of(const glm::dvec3& a,
+                                        const glm::dvec3& b,
+                                        const glm::dvec3& c,
+                                        const glm::dvec3& lo,
+                                        const glm::dvec3& hi) {
+    Bounds bounds{};
+    for (int k = 0; k < 3; ++k) {
+      bounds.lo[k] = std::nextafter(static_cast<float>(lo[k]), -HUGE_VALF);
+      bounds.hi[k] = std::nextafter(static_cast<float>(hi[k]), HUGE_VALF);
+    }
+    const glm::dvec3 n = glm::cross(b - a, c - a);
+    const double longest =
+        std::max({glm::dot(b - a, b - a), glm::dot(c - b, c - b),
+                  glm::dot(a - c, a - c)});
+    const double length = glm::length(n);
+    if (length > 1e-3 * longest && length > 0.0) {
+      bounds.normal = n / length;
+      bounds.offset = glm::dot(bounds.normal, a);
+    }
+    return bounds;
+  }
+
+  // The triangles by cell, shared by the queriers of one surface: each
+  // cell's triangles are a range of `members`, in triangle order, found
+  // through an open-addressing table of the filled cells' keys (a hash map
+  // of vectors was a tenth of the decimation's distance tests, and its
+  // million small vectors most of the index's building).
   struct Index {
+    std::vector<Bounds> bounds;  ///< by triangle
     CellGrid grid;
-    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells;
+    std::vector<std::uint64_t> slots;       ///< a cell's key, or kEmpty
+    std::vector<std::uint32_t> slot_range;  ///< per slot: its range
+    std::vector<std::uint32_t> starts;      ///< per range, and one past
+    std::vector<std::uint32_t> members;
     std::vector<std::uint32_t> large;
+    int slot_bits = 0;
+
+    static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};  ///< no key
+
+    [[nodiscard]] std::size_t slot_of(std::uint64_t key) const {
+      return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ULL) >>
+                                      (64 - slot_bits));
+    }
+
+    [[nodiscard]] std::span<const std::uint32_t> cell(std::uint64_t key) const {
+      const std::size_t mask = slots.size() - 1;
+      for (std::size_t s = slot_of(key);; s = (s + 1) & mask) {
+        if (slots[s] == key) {
+          const std::uint32_t r = slot_range[s];
+          return {members.data() + starts[r], starts[r + 1] - starts[r]};
+        }
+        if (slots[s] == kEmpty) return {};
+      }
+    }
   };
 
   SurfaceDistance(const TriangleMesh& mesh, std::shared_ptr<const Index> index)

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "cgal/exact_checks.hpp"
@@ -79,6 +81,59 @@ TEST(TrianglePair, TellsAFoldFromNeighboursAlongTheirEdge) {
   EXPECT_FALSE(triangles_intersect(first, flat));
   EXPECT_TRUE(triangles_intersect(first, folded));
   EXPECT_EQ(intersecting_pairs({first, folded}).size(), 1u);
+}
+
+TEST(TrianglePair, TellsTrianglesRoundOneCornerApartFromOverlapping) {
+  const glm::dvec3 o(0.1, 0.2, 0.3);
+  const auto at = [&](double x, double y, double z) {
+    return o + glm::dvec3(x, y, z);
+  };
+  const IndexedTriangle first{{0, 1, 2}, {o, at(1, 0, 0), at(1, 1, 0)}};
+  // Round the corner in one plane: the next but one of a fan, and one
+  // overlapping the first.
+  const IndexedTriangle beyond{{0, 3, 4}, {o, at(0, 1, 0), at(-1, 1, 0)}};
+  const IndexedTriangle over{{0, 3, 4}, {o, at(1, 0.5, 0), at(0, 1, 0)}};
+  // Out of the plane: below the first, then through it.
+  const IndexedTriangle below{{0, 3, 4}, {o, at(0.5, 0.8, -1), at(0, 1, -1)}};
+  const IndexedTriangle through{{0, 3, 4},
+                                {o, at(0.9, 0.5, -1), at(0.9, 0.5, 1)}};
+  // Seen from above, one lies over the other's sector; they only meet at
+  // the corner since it rises away.
+  const IndexedTriangle above{{0, 3, 4}, {o, at(1, 0.2, 1), at(1, 0.8, 1)}};
+  EXPECT_FALSE(triangles_intersect(first, beyond));
+  EXPECT_FALSE(triangles_intersect(beyond, first));
+  EXPECT_TRUE(triangles_intersect(first, over));
+  EXPECT_TRUE(triangles_intersect(over, first));
+  EXPECT_FALSE(triangles_intersect(first, below));
+  EXPECT_TRUE(triangles_intersect(first, through));
+  EXPECT_TRUE(triangles_intersect(through, first));
+  EXPECT_FALSE(triangles_intersect(first, above));
+  EXPECT_FALSE(triangles_intersect(above, first));
+}
+
+TEST(TrianglePair, FindsThePairsOfAFoldedFanAsCgalDoes) {
+  // A flat fan of 24 triangles round a centre, then the same fan with every
+  // third rim point pushed across its neighbour: coplanar overlaps round
+  // one corner that the projection alone must not clear.
+  for (const bool folded : {false, true}) {
+    TriangleMesh mesh;
+    mesh.vertices.push_back({0.3, 0.7, 1.1});
+    constexpr int kRim = 24;
+    for (int i = 0; i < kRim; ++i) {
+      double angle = 2.0 * std::numbers::pi * i / kRim;
+      if (folded && i % 3 == 0) angle += 2.5 * 2.0 * std::numbers::pi / kRim;
+      mesh.vertices.push_back(
+          {0.3 + std::cos(angle), 0.7 + std::sin(angle), 1.1});
+    }
+    for (std::uint32_t i = 0; i < kRim; ++i) {
+      mesh.triangles.push_back({0, 1 + i, 1 + (i + 1) % kRim});
+    }
+    const auto pairs = intersecting_pairs(indexed(mesh));
+    EXPECT_EQ(pairs.size(),
+              exact_checks(mesh, true, false).self_intersecting_pairs)
+        << folded;
+    EXPECT_EQ(pairs.empty(), !folded);
+  }
 }
 
 }  // namespace

@@ -29,6 +29,11 @@ struct PartOptions {
   /// printed as its extruded footprint needs no such union: its plates only
   /// witness what the footprint must hold.
   bool unite_coplanar_polygons = true;
+  /// Test each part of tubes joined at hull junctions for cutting itself,
+  /// and leave the junctions of those that do to the union. Off, the parts
+  /// may cut themselves: only for measuring them (the size loop's first
+  /// pass, whose parts have the same box unless a junction would be left).
+  bool check_self_intersections = true;
 };
 
 /// The parts and what they came from.

@@ -52,6 +52,51 @@ std::array<Point, 3> shared_first(const IndexedTriangle& t,
           point(t.points[order[2]])};
 }
 
+// The projection of triangle p's space along the axis p faces most (its
+// normal's largest coordinate), which keeps p a triangle unless it has
+// almost no area.
+struct FacingProjection {
+  int axis = 2;
+
+  explicit FacingProjection(const std::array<Point, 3>& p) {
+    const auto n = CGAL::cross_product(p[1] - p[0], p[2] - p[0]);
+    const double ax = std::abs(n.x());
+    const double ay = std::abs(n.y());
+    const double az = std::abs(n.z());
+    axis = ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2);
+  }
+
+  [[nodiscard]] Inexact::Point_2 operator()(const Point& x) const {
+    return {x[(axis + 1) % 3], x[(axis + 2) % 3]};
+  }
+};
+
+// Whether triangles p and q, sharing their first corner and no other, meet
+// only there as seen along the axis p faces most: a line through the corner
+// along one of the four sides from it leaves the one triangle's other
+// corner strictly on one side and both of the other's strictly on the
+// other. Exact (EPICK's 2D orientation on the coordinates as they are); a
+// projection of p without area answers false, and the 3D tests decide.
+bool apart_round_corner(const std::array<Point, 3>& p,
+                        const std::array<Point, 3>& q) {
+  const FacingProjection project(p);
+  const Inexact::Point_2 o = project(p[0]);
+  const std::array<Inexact::Point_2, 2> a{project(p[1]), project(p[2])};
+  const std::array<Inexact::Point_2, 2> b{project(q[1]), project(q[2])};
+  const CGAL::Orientation own = CGAL::orientation(o, a[0], a[1]);
+  if (own == CGAL::COLLINEAR) return false;
+  const auto parts = [&](const Inexact::Point_2& along,
+                         const Inexact::Point_2& mine,
+                         const std::array<Inexact::Point_2, 2>& theirs) {
+    const CGAL::Orientation s = CGAL::orientation(o, along, mine);
+    return s != CGAL::COLLINEAR &&
+           CGAL::orientation(o, along, theirs[0]) == -s &&
+           CGAL::orientation(o, along, theirs[1]) == -s;
+  };
+  return parts(a[0], a[1], b) || parts(a[1], a[0], b) || parts(b[0], b[1], a) ||
+         parts(b[1], b[0], a);
+}
+
 // triangles_intersect for triangles neither of which is degenerate.
 bool proper_triangles_intersect(const IndexedTriangle& a,
                                 const IndexedTriangle& b) {
@@ -80,6 +125,13 @@ bool proper_triangles_intersect(const IndexedTriangle& a,
       return CGAL::do_intersect(Triangle(p[0], p[1], p[2]),
                                 Triangle(q[0], q[1], q[2]));
     case 1:
+      // Triangles round one vertex of a flat region are nearly coplanar,
+      // where the plane tests below need exact arithmetic. Seen along the
+      // axis that p faces most, p's projection is a triangle (p[2] off the
+      // line p[0] p[1]) and the projection is one to one on p: if a line
+      // through the shared corner parts the two projections, they meet only
+      // there, and so do the triangles.
+      if (apart_round_corner(p, q)) return false;
       // Beyond the shared corner, one triangle's opposite side must meet
       // the other triangle, so cross its plane.
       return (!beside(q, p[1], p[2]) &&
@@ -95,15 +147,8 @@ bool proper_triangles_intersect(const IndexedTriangle& a,
       // exact arithmetic: first, if the corners lie strictly on opposite
       // sides of the edge seen along the axis the triangle faces most, the
       // two cannot fold onto each other (coplanar or not).
-      const auto n = CGAL::cross_product(p[1] - p[0], p[2] - p[0]);
-      const double ax = std::abs(n.x());
-      const double ay = std::abs(n.y());
-      const double az = std::abs(n.z());
-      const int axis = ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2);
+      const FacingProjection project(p);
       const auto side = [&](const Point& c) {
-        const auto project = [&](const Point& x) {
-          return Inexact::Point_2(x[(axis + 1) % 3], x[(axis + 2) % 3]);
-        };
         return CGAL::orientation(project(p[0]), project(p[1]), project(c));
       };
       const CGAL::Orientation sp = side(p[2]);

@@ -1,0 +1,103 @@
+// Copyright 2026 the lsolid authors
+// SPDX-License-Identifier: MIT
+#include "surface_distance.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "support/mesh_checks.hpp"
+
+namespace lsolid {
+namespace {
+
+double brute_distance(const TriangleMesh& mesh, const glm::dvec3& p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& t : mesh.triangles) {
+    const glm::dvec3 d =
+        closest_point_on_triangle(p, mesh.vertices[t[0]], mesh.vertices[t[1]],
+                                  mesh.vertices[t[2]]) -
+        p;
+    best = std::min(best, glm::length(d));
+  }
+  return best;
+}
+
+bool brute_covers(const TriangleMesh& mesh, const glm::dvec3& a,
+                  const glm::dvec3& b, const glm::dvec3& c, double r) {
+  for (const auto& t : mesh.triangles) {
+    const auto near = [&](const glm::dvec3& p) {
+      const glm::dvec3 d =
+          closest_point_on_triangle(p, mesh.vertices[t[0]], mesh.vertices[t[1]],
+                                    mesh.vertices[t[2]]) -
+          p;
+      return glm::dot(d, d) <= r * r;
+    };
+    if (near(a) && near(b) && near(c)) return true;
+  }
+  return false;
+}
+
+// A surface with the kinds of triangle the index files differently: small
+// ones, filed by their box's cells; a box's sides and a long sliver, across
+// many cells, filed by the cells they pass through; and a triangle nearly
+// without area, which the plane tests leave out.
+TriangleMesh mixed_surface() {
+  TriangleMesh mesh = testing::box_mesh({0, 0, 0}, {3, 2, 1});
+  const auto add = [&](const glm::dvec3& a, const glm::dvec3& b,
+                       const glm::dvec3& c) {
+    const auto n = static_cast<std::uint32_t>(mesh.vertices.size());
+    mesh.vertices.insert(mesh.vertices.end(), {a, b, c});
+    mesh.triangles.push_back({n, n + 1, n + 2});
+  };
+  for (int i = 0; i < 40; ++i) {
+    const double x = 0.1 * i;
+    add({x, 0, 1.5}, {x + 0.07, 0.05, 1.5}, {x + 0.02, 0.09, 1.52});
+  }
+  add({-1, -1, 2}, {4, -0.9, 2.01}, {-1, -0.95, 2});  // a long sliver
+  add({0, 3, 0}, {2, 3 + 1e-9, 0}, {4, 3, 1e-12});    // nearly no area
+  return mesh;
+}
+
+TEST(SurfaceDistance, AnswersAsAScanOfEveryTriangleDoes) {
+  const TriangleMesh mesh = mixed_surface();
+  SurfaceDistance surface(mesh);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> x(-1.5, 4.5);
+  std::uniform_real_distribution<double> y(-1.5, 3.5);
+  std::uniform_real_distribution<double> z(-1.5, 2.5);
+  std::uniform_real_distribution<double> jitter(-0.08, 0.08);
+  int near = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const glm::dvec3 p(x(random), y(random), z(random));
+    const double truth = brute_distance(mesh, p);
+    EXPECT_DOUBLE_EQ(surface.distance(p, 100.0), std::min(truth, 100.0));
+    for (const double r : {0.05, 0.3, 1.0}) {
+      EXPECT_EQ(surface.within(p, r), truth <= r) << i << " " << r;
+      const glm::dvec3 b = p + glm::dvec3(jitter(random), jitter(random), 0);
+      const glm::dvec3 c = p + glm::dvec3(0, jitter(random), jitter(random));
+      const bool covered = brute_covers(mesh, p, b, c, r);
+      near += covered ? 1 : 0;
+      EXPECT_EQ(surface.covers(p, b, c, r), covered) << i << " " << r;
+    }
+  }
+  // The points were not all far from the surface, nor all near it.
+  EXPECT_GT(near, 500);
+  EXPECT_LT(near, 11000);
+}
+
+TEST(SurfaceDistance, AQuerierSharingTheIndexAnswersTheSame) {
+  const TriangleMesh mesh = mixed_surface();
+  SurfaceDistance surface(mesh);
+  SurfaceDistance other = surface.sharing();
+  for (double t = -1.0; t < 4.0; t += 0.01) {
+    const glm::dvec3 p(t, 0.5 * t, 1.0 + 0.1 * t);
+    EXPECT_EQ(surface.distance(p, 10.0), other.distance(p, 10.0));
+    EXPECT_EQ(surface.within(p, 0.05), other.within(p, 0.05));
+  }
+}
+
+}  // namespace
+}  // namespace lsolid

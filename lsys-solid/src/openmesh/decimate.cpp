@@ -12,6 +12,8 @@
 // next-best halfedge.
 #include "lsolid/decimate.hpp"
 
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -33,6 +35,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <queue>
 #include <tuple>
@@ -714,30 +717,49 @@ TriangleSet triangle_set(const TriangleMesh& mesh) {
 // vertex and on a barycentric grid over every triangle about kSampleSpacingMm
 // apart (at most 16 steps a side); capped at `limit_mm`. Triangles in
 // `unchanged`, which `to` has too, lie at distance 0 and are skipped: on the
-// bush at n = 6 that is most of the measuring time saved.
-double sampled_distance(const TriangleMesh& from, SurfaceDistance& to,
+// bush at n = 6 that is most of the measuring time saved. The triangles are
+// measured in fixed chunks on oneTBB's threads (each thread with its own
+// query state on `to`'s index), and the largest of the chunks' largest
+// distances is the answer: a sample is only skipped when proven no farther
+// than a distance its chunk measured, so the answer is the same whatever
+// the threads (one thread measured the bush's output for 1.5 s).
+double sampled_distance(const TriangleMesh& from, const SurfaceDistance& to,
                         double limit_mm, const TriangleSet& unchanged) {
-  double worst = 0.0;
-  // Only a point farther than the worst so far can change it: a part of a
-  // triangle within that of one triangle of `to` is skipped, and most
-  // points find a triangle that near at the first try.
-  const auto covered = [&](const glm::dvec3& a, const glm::dvec3& b,
-                           const glm::dvec3& c) {
-    return worst > 0.0 && to.covers(a, b, c, worst);
-  };
-  const auto measure = [&](const glm::dvec3& p) {
-    if (!to.within(p, worst)) {
-      worst = std::max(worst, to.distance(p, limit_mm));
+  constexpr std::size_t kChunk = 4096;
+  const std::size_t chunks = (from.triangles.size() + kChunk - 1) / kChunk;
+  std::vector<double> worst_of(chunks, 0.0);
+  tbb::enumerable_thread_specific<std::unique_ptr<SurfaceDistance>> queriers;
+  tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t chunk) {
+    std::unique_ptr<SurfaceDistance>& querier = queriers.local();
+    if (!querier) querier = std::make_unique<SurfaceDistance>(to.sharing());
+    SurfaceDistance& near = *querier;
+    double worst = 0.0;
+    // Only a point farther than the worst so far can change it: a part of
+    // a triangle within that of one triangle of `to` is skipped, and most
+    // points find a triangle that near at the first try.
+    const auto covered = [&](const glm::dvec3& a, const glm::dvec3& b,
+                             const glm::dvec3& c) {
+      return worst > 0.0 && near.covers(a, b, c, worst);
+    };
+    const auto measure = [&](const glm::dvec3& p) {
+      if (!near.within(p, worst)) {
+        worst = std::max(worst, near.distance(p, limit_mm));
+      }
+      return true;
+    };
+    const std::size_t end =
+        std::min(from.triangles.size(), (chunk + 1) * kChunk);
+    for (std::size_t i = chunk * kChunk; i < end; ++i) {
+      const auto& t = from.triangles[i];
+      if (unchanged.contains(key_of(from, t))) continue;
+      const Corners corner{from.vertices[t[0]], from.vertices[t[1]],
+                           from.vertices[t[2]]};
+      visit_samples(corner, sample_steps(corner, 1.0), true, covered, measure);
     }
-    return true;
-  };
-  for (const auto& t : from.triangles) {
-    if (unchanged.contains(key_of(from, t))) continue;
-    const Corners corner{from.vertices[t[0]], from.vertices[t[1]],
-                         from.vertices[t[2]]};
-    visit_samples(corner, sample_steps(corner, 1.0), true, covered, measure);
-  }
-  return worst;
+    worst_of[chunk] = worst;
+  });
+  return worst_of.empty() ? 0.0
+                          : *std::max_element(worst_of.begin(), worst_of.end());
 }
 
 // Holds the status flags and normals the decimaters use. The decimaters

@@ -83,10 +83,11 @@ int main(int argc, char** argv) {
                  "corefine (CGAL's corefinement, to compare or report a bug)")
       ->check(CLI::IsMember({"exact", "corefine"}))
       ->excludes(no_union);
-  app.add_option("--threads", build.threads,
-                 "the threads the union and decimation may use, 1 to 256 "
-                 "(default: all the "
-                 "machine's); the model is the same whatever the number")
+  app.add_option(
+         "--threads", build.threads,
+         "the threads the parts, union and decimation may use, 1 to 256 "
+         "(default: all the "
+         "machine's); the model is the same whatever the number")
       ->type_name("N");
   app.add_flag("--multi-material", build.multi_material,
                "in a .3mf or .obj, one volume per colour, not overlapping, "

@@ -601,7 +601,8 @@ void refuse_beyond_a_kilometre(const lsys::Grammar& grammar,
 Solid build_from_skeleton(const lsys::Grammar& grammar,
                           const lsys::Skeleton& drawn,
                           const SolidOptions& options, Stopwatch& clock) {
-  // The union and the decimation (its two halves) run on oneTBB's threads.
+  // The part builder's tests, the union and the decimation run on oneTBB's
+  // threads.
   std::optional<tbb::global_control> limit;
   if (options.threads > 0) {
     limit.emplace(tbb::global_control::max_allowed_parallelism,

@@ -34,9 +34,9 @@ struct SolidOptions {
   /// The union's engine (`--union-engine`); the exact one falls back to the
   /// corefinement where it cannot finish, or its result fails a check.
   UnionEngine union_engine = UnionEngine::ExactCrossings;
-  /// The threads the union and the decimation may use (`--threads`); 0:
-  /// all the machine has.
-  /// The model is the same, byte for byte, whatever the number.
+  /// The threads the parts, the union and the decimation may use (`--threads`);
+  /// 0: all the machine has. The model is the same, byte for byte, whatever the
+  /// number.
   int threads = 0;
   /// The format the mesh is for: its coordinates are snapped to what that
   /// format keeps (precision_for) before the last check.

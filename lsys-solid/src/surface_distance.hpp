@@ -49,6 +49,21 @@ namespace lsolid {
   return a + ab * (vb * denominator) + ac * (vc * denominator);
 }
 
+/// The unit normal of triangle abc where it is well conditioned (its area
+/// at least a thousandth of its longest edge's square, so that rounding
+/// turns it by less than about 1e-12), else zero: a plane test with a zero
+/// normal passes every point. The distance tests below reject by the plane
+/// only what the closest point would reject too.
+[[nodiscard]] inline glm::dvec3 well_conditioned_normal(const glm::dvec3& a,
+                                                        const glm::dvec3& b,
+                                                        const glm::dvec3& c) {
+  const glm::dvec3 n = glm::cross(b - a, c - a);
+  const double length = glm::length(n);
+  const double longest = std::max(
+      {glm::dot(b - a, b - a), glm::dot(c - b, c - b), glm::dot(a - c, a - c)});
+  return length > 1e-3 * longest && length > 0.0 ? n / length : glm::dvec3(0.0);
+}
+
 /// Calls visit(key) once for each cell of `grid` that triangle abc passes
 /// through: those whose centre lies within half a cell's diagonal of it (a
 /// thousandth more, for rounding). Every point of the triangle lies in one
@@ -82,13 +97,7 @@ void for_each_cell_through(const CellGrid& grid, const glm::dvec3& a,
     // the piece: most of a sliver's box is, and the plane's distance costs a
     // dot product where the closest point costs a dozen. A thin piece (its
     // normal ill conditioned) skips this test; the margin covers rounding.
-    const glm::dvec3 n = glm::cross(q - p, r - p);
-    const double length = glm::length(n);
-    const double longest =
-        std::max({glm::dot(q - p, q - p), glm::dot(r - q, r - q),
-                  glm::dot(p - r, p - r)});
-    const bool planar = length > 1e-3 * longest && length > 0.0;
-    const glm::dvec3 unit = planar ? n / length : glm::dvec3(0.0);
+    const glm::dvec3 unit = well_conditioned_normal(p, q, r);
     const double offset = glm::dot(unit, p);
     const double slab = reach * (1.0 + 1e-9) + 1e-9 * grid.cell_mm();
     grid.for_each(lo, hi, [&](std::uint64_t key, const glm::dvec3& centre) {
@@ -209,9 +218,8 @@ class SurfaceDistance {
       // Most queries (0.05 mm round a point, in cells of about a triangle)
       // fall in one cell, where no triangle is met twice: nothing to mark
       // (reading each triangle's mark was a tenth of `covers`' samples).
-      for (const auto& list :
-           {index_->cell(CellGrid::key(grid.cell_of(lo))),
-            std::span<const std::uint32_t>(index_->large)}) {
+      for (const auto& list : {index_->cell(CellGrid::key(grid.cell_of(lo))),
+                               std::span<const std::uint32_t>(index_->large)}) {
         for (const std::uint32_t i : list) {
           if (near(i)) {
             hint_ = i;
@@ -257,7 +265,7 @@ class SurfaceDistance {
   struct Bounds {
     glm::vec3 lo;
     glm::vec3 hi;
-    glm::dvec3 normal;  ///< unit, or zero: no plane test
+    glm::dvec3 normal;  ///< well_conditioned_normal: zero, no plane test
     double offset;      ///< dot(normal, a)
 
     [[nodiscard]] bool may_reach(const glm::dvec3& p, double r) const {
@@ -280,15 +288,8 @@ class SurfaceDistance {
       bounds.lo[k] = std::nextafter(static_cast<float>(lo[k]), -HUGE_VALF);
       bounds.hi[k] = std::nextafter(static_cast<float>(hi[k]), HUGE_VALF);
     }
-    const glm::dvec3 n = glm::cross(b - a, c - a);
-    const double longest =
-        std::max({glm::dot(b - a, b - a), glm::dot(c - b, c - b),
-                  glm::dot(a - c, a - c)});
-    const double length = glm::length(n);
-    if (length > 1e-3 * longest && length > 0.0) {
-      bounds.normal = n / length;
-      bounds.offset = glm::dot(bounds.normal, a);
-    }
+    bounds.normal = well_conditioned_normal(a, b, c);
+    bounds.offset = glm::dot(bounds.normal, a);
     return bounds;
   }
 

@@ -651,6 +651,7 @@ Solid build_from_skeleton(const lsys::Grammar& grammar,
   bool is_flat = false;
   refuse_a_scale_below_a_micrometre(grammar, skeleton, print);
   double mm_per_unit = estimate_scale(skeleton, print);
+  bool parts_tested = false;
   for (int pass = 0; pass < kSizePasses; ++pass) {
     // The first pass of a sized build only measures: its parts are not
     // tested for cutting themselves (most of their time), which leaves
@@ -683,6 +684,7 @@ Solid build_from_skeleton(const lsys::Grammar& grammar,
                                    .plane = plane};
     const auto place = [&](bool unite_coplanar) {
       parts = build(unite_coplanar);
+      parts_tested = !measuring;
       Placed placed = place_on_bed(std::move(parts.parts), placing);
       parts.parts = std::move(placed.parts);
       report.placement = placed.placement;
@@ -703,6 +705,13 @@ Solid build_from_skeleton(const lsys::Grammar& grammar,
       continue;  // built again, tested, at the same scale
     }
     mm_per_unit = scaled.mm_per_unit * wanted / actual;
+  }
+  // Parts that may cut themselves are for measuring only; the union must
+  // never get them.
+  if (!parts.parts.empty() && !parts_tested) {
+    throw GeometryError(
+        "internal error: the parts to unite were built for measuring only "
+        "(please report it with this file)");
   }
   if (sized && !parts.parts.empty() &&
       std::fabs(actual - wanted) > kSizeRefused * wanted) {

@@ -2,14 +2,23 @@
 // SPDX-License-Identifier: MIT
 #include "lsolid/parts.hpp"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <glm/geometric.hpp>
 #include <numbers>
+#include <sstream>
+#include <string>
 
 #include "lsolid/boolean.hpp"
 #include "lsolid/errors.hpp"
+#include "lsolid/rounding.hpp"
+#include "lsolid/validate.hpp"
 #include "support/mesh_checks.hpp"
 
 namespace lsolid {
@@ -251,6 +260,120 @@ lsys::Polygon polygon(std::vector<glm::dvec3> points, int color = 0) {
   p.points = std::move(points);
   p.color = color;
   return p;
+}
+
+// The joints among the parts, by their labels.
+std::vector<const Part*> joints_of(const PartSet& parts) {
+  std::vector<const Part*> out;
+  for (const Part& part : parts.parts) {
+    if (part.label.starts_with("joint at")) out.push_back(&part);
+  }
+  return out;
+}
+
+// Five petals of ABOP fig. 1.26's flower, `{ &&&& -f+f | -f+f }` turned
+// by 72° each, from the corner at `apex`, of colour 1.
+std::vector<lsys::Polygon> petals(const glm::dvec3& apex) {
+  std::vector<lsys::Polygon> out;
+  for (int k = 0; k < 5; ++k) {
+    const double a = 2.0 * std::numbers::pi * k / 5.0;
+    const glm::dvec3 out_dir(std::cos(a), std::sin(a), 0.0);
+    const glm::dvec3 side(-std::sin(a), std::cos(a), 0.0);
+    const glm::dvec3 up(0.0, 0.0, 1.0);
+    out.push_back(polygon({apex, apex + 2.0 * out_dir + 0.6 * side + up,
+                           apex + 4.0 * out_dir + 2.0 * up,
+                           apex + 2.0 * out_dir - 0.6 * side + up},
+                          1));
+  }
+  return out;
+}
+
+TEST(Parts, JoinsPlatesThatStartFromOneCornerInDifferentPlanes) {
+  lsys::Skeleton s;
+  const glm::dvec3 apex(1.0, 2.0, 3.0);
+  s.polygons = petals(apex);
+  const PartSet parts = build_parts(s, {.wall_mm = 0.8});
+  EXPECT_EQ(parts.plates, 5U);
+  const std::vector<const Part*> joints = joints_of(parts);
+  ASSERT_EQ(joints.size(), 1U);
+  EXPECT_EQ(parts.joints, 1U);
+  EXPECT_EQ(joints[0]->color, 1);
+  // About the corner, and enclosing each plate's edge there, half a
+  // plate's thickness to either side of it.
+  double nearest = 1e9;
+  double farthest = 0.0;
+  for (const glm::dvec3& p : joints[0]->mesh.vertices) {
+    nearest = std::min(nearest, glm::distance(p, apex));
+    farthest = std::max(farthest, glm::distance(p, apex));
+  }
+  EXPECT_GT(nearest, 1.1 * plate_thickness_mm(0.8, 0.05) / 2.0);
+  EXPECT_LT(farthest, 0.8);
+  expect_printable(union_parts(parts.parts).mesh);
+}
+
+TEST(Parts, GivesTheCornerJointTheColourOfItsPlates) {
+  // The stem of colour 0 ends where the petals start: its tip joint is
+  // the petals' corner joint, of their colour, so that their own volume
+  // (--multi-material) has it.
+  lsys::Skeleton s;
+  const glm::dvec3 apex(0.0, 0.0, 10.0);
+  s.segments = {segment({0, 0, 0}, apex, 1)};
+  s.polygons = petals(apex);
+  for (lsys::Polygon& p : s.polygons) p.parent = 0;
+  const PartSet parts = build_parts(s, {.wall_mm = 0.8});
+  const std::vector<const Part*> joints = joints_of(parts);
+  ASSERT_EQ(joints.size(), 1U);
+  EXPECT_EQ(joints[0]->color, 1);
+}
+
+TEST(Parts, NeedsNoCornerJointWherePlatesShareAPlaneOrNoCorner) {
+  lsys::Skeleton s;
+  // Two triangles in one plane that share a corner only, and one that
+  // starts on another's side, not at its corner.
+  s.polygons = {polygon({{0, 0, 0}, {4, 0, 0}, {4, 3, 0}}),
+                polygon({{0, 0, 0}, {-4, 0, 0}, {-4, -3, 0}}),
+                polygon({{2, 0, 0}, {2, 0, 4}, {2, 3, 4}})};
+  const PartSet parts = build_parts(s, {.wall_mm = 0.8});
+  EXPECT_TRUE(joints_of(parts).empty());
+}
+
+// The polygons of tests/data/parts/fig-1.26-flowers.txt.
+std::vector<lsys::Polygon> fig_1_26_flowers() {
+  std::ifstream in(std::filesystem::path(LSOLID_SOURCE_DIR) / "tests" / "data" /
+                   "parts" / "fig-1.26-flowers.txt");
+  std::vector<lsys::Polygon> out;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream words(line);
+    lsys::Polygon p;
+    words >> p.color;
+    glm::dvec3 q;
+    while (words >> q.x >> q.y >> q.z) p.points.push_back(q);
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
+TEST(Parts, CornerJointsKeepPetalsWithoutTheirStemPrintable) {
+  lsys::Skeleton s;
+  s.polygons = fig_1_26_flowers();
+  ASSERT_EQ(s.polygons.size(), 15U);
+  PartSet parts = build_parts(s, {.wall_mm = 0.8});
+  // Moved as the build moved them onto the bed.
+  const glm::dvec3 moved(-12.580917021827213, -4.158017665613464, 0.8);
+  for (Part& part : parts.parts) {
+    for (glm::dvec3& p : part.mesh.vertices) p += moved;
+  }
+  EXPECT_EQ(parts.plates, 15U);
+  // The corners of both flowers and of two leaves from one node.
+  EXPECT_EQ(joints_of(parts).size(), 3U);
+  const Rounded rounded =
+      round_for(union_parts(parts.parts).mesh, MeshFormat::ThreeMf);
+  EXPECT_TRUE(rounded.clean);
+  const ValidationReport check = validate(rounded.mesh);
+  EXPECT_TRUE(check.is_printable())
+      << fmt::format("{}", fmt::join(check.problems(), "; "));
 }
 
 TEST(Parts, UnitesAFanOfCoplanarTrianglesIntoOnePlate) {

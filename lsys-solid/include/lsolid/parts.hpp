@@ -43,7 +43,8 @@ struct PartSet {
   /// Branch points meshed directly: the convex hull of the rings of the
   /// tubes that meet there, stitched to them (no boolean needed).
   std::size_t junctions = 0;
-  /// Joint spheres, where a junction is left to the union.
+  /// Joint spheres, where a junction is left to the union, where a leaf
+  /// starts at a tip and where plates in different planes share a corner.
   std::size_t joints = 0;
   std::size_t plates = 0;
   /// Balls of `@O`.

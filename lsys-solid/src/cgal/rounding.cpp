@@ -89,10 +89,17 @@ Rounded round_and_repair(const TriangleMesh& input,
     stats.passes = pass + 1;
     snap(mesh, precision);
     const std::size_t before = count_faces(mesh);
-    PMP::remove_degenerate_faces(mesh);
-    PMP::experimental::remove_almost_degenerate_faces(
-        faces(mesh), mesh, kCapCosine, 1.0, short_mm,
-        CGAL::parameters::flip_triangle_height_threshold(short_mm));
+    try {
+      PMP::remove_degenerate_faces(mesh);
+      PMP::experimental::remove_almost_degenerate_faces(
+          faces(mesh), mesh, kCapCosine, 1.0, short_mm,
+          CGAL::parameters::flip_triangle_height_threshold(short_mm));
+    } catch (const CGAL::Failure_exception&) {
+      // CGAL 5.5 stops on a precondition where a collapse left a face that
+      // is no longer a triangle; the mesh is then beyond these repairs.
+      ++stats.repairs_refused;
+      break;
+    }
     mesh.collect_garbage();
     // Collapses may move vertices off the grid: round again, and
     // judge the result only as it will be written.

@@ -30,6 +30,10 @@ namespace {
 constexpr int kMaxRounds = 8;
 constexpr double kOnAxis = 0.1;  // of the stem radius: a leaf starts there
 constexpr double kPlateMargin = 1.05;
+// The least radius of a joint at a plate's corner, of the wall: it
+// encloses the plate's edge there (half a plate's thickness from the
+// corner, about 0.55 of the wall).
+constexpr double kPlateJoint = 0.75;
 
 // The largest side of the skeleton's box, at least 1 mm.
 double size_of(const lsys::Skeleton& skeleton) {
@@ -53,7 +57,7 @@ void add_tip_joint(const lsys::Skeleton& skeleton, const BranchGraph& graph,
   const bool goes_on = graph.continuation[i] >= 0 || graph.end_junction[i] >= 0;
   if (from_end <= stem_radius &&
       !(goes_on && from_end <= kOnAxis * stem_radius)) {
-    joints.add(stem.p1, std::max(stem_radius, 0.75 * options.wall_mm),
+    joints.add(stem.p1, std::max(stem_radius, kPlateJoint * options.wall_mm),
                stem.color);
   }
 }
@@ -102,6 +106,9 @@ PartSet build_parts(const lsys::Skeleton& skeleton,
   set.skipped_polygons = plates.skipped;
   for (const std::size_t i : plates.tip_order) {
     add_tip_joint(skeleton, graph, options, skeleton.polygons[i], round.joints);
+  }
+  for (const auto& [corner, color] : plates.shared_corners) {
+    round.joints.claim(corner, kPlateJoint * options.wall_mm, color);
   }
   std::size_t index = 0;
   for (const Joint& joint : round.joints.joints()) {

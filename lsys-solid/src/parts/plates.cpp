@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -17,6 +18,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <unordered_map>
 
 #include "cgal/polygon_union.hpp"
 #include "lsolid/validate.hpp"
@@ -49,6 +51,7 @@ class PlateBuilder {
 
   Plates build() {
     add_plates();
+    find_shared_corners();
     return std::move(out_);
   }
 
@@ -99,11 +102,11 @@ class PlateBuilder {
   // others become a plate each.
   void add_plates() {
     const auto& polygons = skeleton_.polygons;
-    std::vector<std::optional<Outline>> outlines;
-    outlines.reserve(polygons.size());
+    outlines_.reserve(polygons.size());
     for (const lsys::Polygon& polygon : polygons) {
-      outlines.push_back(outline(polygon));
+      outlines_.push_back(outline(polygon));
     }
+    const std::vector<std::optional<Outline>>& outlines = outlines_;
     // Candidate pairs by sweeping the boxes along x.
     std::vector<std::size_t> order;
     for (std::size_t i = 0; i < outlines.size(); ++i) {
@@ -126,6 +129,7 @@ class PlateBuilder {
         if (same_color && share_plane(a, b)) groups.join(order[k], order[m]);
       }
     }
+    made_.assign(polygons.size(), false);
     std::map<std::size_t, std::vector<std::size_t>> members;
     for (std::size_t i = 0; i < polygons.size(); ++i) {
       if (!outlines[i]) {
@@ -143,6 +147,8 @@ class PlateBuilder {
       if (group.size() == 1 || !options_.unite_coplanar_polygons ||
           !add_united_plates(group, outlines)) {
         for (const std::size_t i : group) add_plate(*outlines[i], i);
+      } else {
+        for (const std::size_t i : group) made_[i] = true;
       }
       out_.tip_order.insert(out_.tip_order.end(), group.begin(), group.end());
     }
@@ -255,6 +261,47 @@ class PlateBuilder {
              fmt::format("leaf plate of polygon {}", index),
              skeleton_.polygons[index].color});
     ++out_.plates;
+    made_[index] = true;
+  }
+
+  // Plates in different planes that start from one point (five petals of
+  // ABOP fig. 1.26's flower) have their end edges, across each plate at
+  // that corner, cross at the point: a crossing of edges, not of an edge
+  // and a face, that the union decides only as coincident points a few
+  // ulps apart. Where no tube encloses the point (a colour's own volume
+  // with --multi-material: the petals without the stem), rounding those
+  // points folded the result. A joint there encloses the crossing.
+  void find_shared_corners() {
+    struct Corner {
+      std::size_t first = 0;  // the first polygon with the corner
+      bool shared = false;
+    };
+    std::unordered_map<NodeKey, Corner, NodeKeyHash> corners;
+    std::vector<NodeKey> order;
+    const auto& polygons = skeleton_.polygons;
+    for (std::size_t i = 0; i < polygons.size(); ++i) {
+      if (!made_[i]) continue;
+      const Outline& here = *outlines_[i];
+      for (const glm::dvec3& p : here.points) {
+        const NodeKey key = node_key(p);
+        const auto [it, inserted] = corners.emplace(key, Corner{i, false});
+        if (inserted) {
+          order.push_back(key);
+        } else if (std::fabs(glm::dot(outlines_[it->second.first]->normal,
+                                      here.normal)) < kParallel) {
+          it->second.shared = true;
+        }
+      }
+    }
+    for (const NodeKey& key : order) {
+      const Corner& corner = corners.at(key);
+      if (!corner.shared) continue;
+      out_.shared_corners.emplace_back(
+          glm::dvec3(std::bit_cast<double>(key[0]),
+                     std::bit_cast<double>(key[1]),
+                     std::bit_cast<double>(key[2])),
+          polygons[corner.first].color);
+    }
   }
 
   std::vector<glm::dvec3> without_collinear(
@@ -338,6 +385,8 @@ class PlateBuilder {
   const lsys::Skeleton& skeleton_;
   const PartOptions& options_;
   double scale_mm_;  // the skeleton's largest extent, at least 1 mm
+  std::vector<std::optional<Outline>> outlines_;  // per polygon
+  std::vector<bool> made_;  // per polygon: whether it is in a plate
   Plates out_;
 };
 

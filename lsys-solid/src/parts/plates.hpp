@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstddef>
+#include <glm/vec3.hpp>
+#include <utility>
 #include <vector>
 
 #include "lsolid/mesh.hpp"
@@ -20,6 +22,10 @@ struct Plates {
   /// The polygons made plates, in the order their tip joints are to be
   /// asked for (by group of coplanar polygons, each group's in order).
   std::vector<std::size_t> tip_order;
+  /// Corners that plates in different planes share exactly (the turtle
+  /// drew their polygons from one point: the petals of a flower), each
+  /// once, in the order of the first polygon there, with its colour.
+  std::vector<std::pair<glm::dvec3, int>> shared_corners;
 };
 
 /// Each polygon as a plate a little thicker than the thinnest tube:

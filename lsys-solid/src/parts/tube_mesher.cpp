@@ -573,6 +573,11 @@ void JointSet::add(const glm::dvec3& center, double radius, int color) {
   }
 }
 
+void JointSet::claim(const glm::dvec3& center, double radius, int color) {
+  add(center, radius, color);
+  joints_[index_.at(node_key(center))].color = color;
+}
+
 TubeRound mesh_tubes(const lsys::Skeleton& skeleton, const BranchGraph& graph,
                      const PartOptions& options) {
   return TubeMesher(skeleton, graph, options).mesh();

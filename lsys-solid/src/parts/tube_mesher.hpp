@@ -29,6 +29,9 @@ class JointSet {
  public:
   /// Asks for a joint enclosing caps of `radius` at `center`.
   void add(const glm::dvec3& center, double radius, int color);
+  /// As add, and the joint takes `color` even where one was asked for
+  /// already: the colour of what it joins when it is a volume of its own.
+  void claim(const glm::dvec3& center, double radius, int color);
   [[nodiscard]] const std::vector<Joint>& joints() const { return joints_; }
 
  private:

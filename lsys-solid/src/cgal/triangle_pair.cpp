@@ -12,13 +12,14 @@
 
 #include "triangle_pair.hpp"
 
-#include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
+
+#include "box_pairs.hpp"
 
 namespace lsolid {
 namespace {
@@ -191,64 +192,30 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> intersecting_pairs(
                         degenerate[i] = is_degenerate(triangles[i]) ? 1 : 0;
                       }
                     });
-  // The search sorts pointers to the boxes, as CGAL's own test does (boxes
-  // with explicit ids are copied and sorted by value, a third slower); with
-  // the same boxes in the same order, it reports the same pairs in the same
-  // order and orientation.
-  using Box = CGAL::Box_intersection_d::Box_with_info_d<
-      double, 3, std::uint32_t, CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS>;
   std::vector<Box> boxes;
+  std::vector<std::uint32_t> id;  // per box: its triangle
   boxes.reserve(triangles.size());
+  id.reserve(triangles.size());
   for (std::uint32_t i = 0; i < triangles.size(); ++i) {
     if (degenerate[i] != 0) {
       out.emplace_back(i, i);
       continue;
     }
-    CGAL::Bbox_3 b;
-    for (const glm::dvec3& p : triangles[i].points) {
-      b += CGAL::Bbox_3(p.x, p.y, p.z, p.x, p.y, p.z);
-    }
-    boxes.emplace_back(b, i);
+    Box b;
+    for (const glm::dvec3& p : triangles[i].points) b.add(p);
+    boxes.push_back(b);
+    id.push_back(i);
   }
-  // The pairs whose boxes meet, tested in batches on the threads, neither
-  // triangle degenerate (decided once above): CGAL's own test walks the
-  // halfedges round both faces and checks each triangle for degeneracy,
-  // exactly, for every pair (a third of blog tree B's rounding and check at
-  // n = 9).
-  constexpr std::size_t kBatch = 1U << 16U;
-  std::vector<Pair> batch;
-  std::vector<char> meets;
-  const auto test = [&] {
-    meets.assign(batch.size(), 0);
-    tbb::parallel_for(
-        tbb::blocked_range<std::size_t>(0, batch.size(), 512),
-        [&](const tbb::blocked_range<std::size_t>& range) {
-          for (std::size_t i = range.begin(); i < range.end(); ++i) {
-            meets[i] = proper_triangles_intersect(triangles[batch[i].first],
-                                                  triangles[batch[i].second])
-                           ? 1
-                           : 0;
-          }
-        });
-    for (std::size_t i = 0; i < batch.size(); ++i) {
-      if (meets[i] != 0) out.push_back(batch[i]);
-    }
-    batch.clear();
-  };
-  std::vector<const Box*> pointers;
-  pointers.reserve(boxes.size());
-  for (const Box& b : boxes) pointers.push_back(&b);
-  // Ranges under 2,000 boxes are scanned rather than split further, as in
-  // CGAL's test (the default, 10, was half again as slow here).
-  constexpr std::ptrdiff_t kCutoff = 2000;
-  CGAL::box_self_intersection_d(
-      pointers.begin(), pointers.end(),
-      [&](const Box* a, const Box* b) {
-        batch.emplace_back(a->info(), b->info());
-        if (batch.size() == kBatch) test();
-      },
-      kCutoff);
-  test();
+  // The pairs whose boxes meet, tested on the threads, neither triangle
+  // degenerate (decided once above): CGAL's own test walks the halfedges
+  // round both faces and checks each triangle for degeneracy, exactly, for
+  // every pair (a third of blog tree B's rounding and check at n = 9).
+  for (const auto& [a, b] :
+       meeting_box_pairs(boxes, [&](std::uint32_t a, std::uint32_t b) {
+         return proper_triangles_intersect(triangles[id[a]], triangles[id[b]]);
+       })) {
+    out.emplace_back(id[a], id[b]);
+  }
   return out;
 }
 

@@ -28,12 +28,12 @@ struct IndexedTriangle {
                                        const IndexedTriangle& b);
 
 /// The pairs of `triangles` (of one mesh) that meet anywhere but at the
-/// vertices or the edge they share, as CGAL's self-intersection test
-/// (PMP::self_intersections) finds them on a Surface_mesh of the same faces
-/// and vertices, in the same order and orientation: first each degenerate
-/// triangle paired with itself (and with no other), then the pairs in the
-/// order CGAL's box search meets them. The pairs whose boxes meet are
-/// tested on oneTBB's threads.
+/// vertices or the edge they share, the pairs CGAL's self-intersection test
+/// (PMP::self_intersections) finds on a Surface_mesh of the same faces and
+/// vertices: first each degenerate triangle paired with itself (and with no
+/// other), then the others as (i, j), i < j, in increasing order. The boxes
+/// are searched (meeting_box_pairs) and the pairs whose boxes meet tested on
+/// oneTBB's threads.
 [[nodiscard]] std::vector<std::pair<std::uint32_t, std::uint32_t>>
 intersecting_pairs(const std::vector<IndexedTriangle>& triangles);
 

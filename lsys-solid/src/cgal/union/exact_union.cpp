@@ -20,7 +20,6 @@
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
-#include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
 #include <mpfr.h>
 #include <tbb/blocked_range.h>
@@ -28,6 +27,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -37,6 +37,7 @@
 #include <utility>
 #include <vector>
 
+#include "box_pairs.hpp"
 #include "cgal/conversion.hpp"
 #include "cgal/kernel.hpp"
 #include "cgal/triangle_pair.hpp"
@@ -53,11 +54,6 @@ using Interval = CGAL::Interval_nt<false>;
 using Sign = CGAL::Sign;
 
 Point3 point3(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
-
-// Box searches scan ranges under this many boxes rather than split them
-// further, as CGAL's self-intersection test does (its default, 10, cost the
-// union's box searches half again as much).
-constexpr std::ptrdiff_t kBoxCutoff = 2000;
 
 // A degeneracy or a broken invariant: the union gives up, and the caller
 // shifts an operand or falls back to the corefinement.
@@ -494,9 +490,6 @@ class Engine {
   }
 
  private:
-  using FaceBox =
-      CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::uint32_t>;
-
   static CGAL::Bbox_3 box_of(const TriangleMesh& m,
                              const std::array<std::uint32_t, 3>& t) {
     CGAL::Bbox_3 b;
@@ -512,7 +505,8 @@ class Engine {
 
   void find_segments() {
     for (int m = 0; m < 2; ++m) mesh_box_[m] = box_of(*ops_[m].mesh);
-    std::array<std::vector<FaceBox>, 2> boxes;
+    std::array<std::vector<Box>, 2> boxes;
+    std::array<std::vector<std::uint32_t>, 2> face;  // per box
     for (int m = 0; m < 2; ++m) {
       const TriangleMesh& mesh = *ops_[m].mesh;
       face_box_overlaps_[m].assign(mesh.triangles.size(), 0);
@@ -520,17 +514,19 @@ class Engine {
         const CGAL::Bbox_3 b = box_of(mesh, mesh.triangles[f]);
         if (!CGAL::do_overlap(b, mesh_box_[1 - m])) continue;
         face_box_overlaps_[m][f] = 1;
-        boxes[m].emplace_back(b, f);
+        boxes[m].push_back(Box{.min = {b.xmin(), b.ymin(), b.zmin()},
+                               .max = {b.xmax(), b.ymax(), b.zmax()}});
+        face[m].push_back(f);
       }
     }
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-    CGAL::box_intersection_d(
-        boxes[0].begin(), boxes[0].end(), boxes[1].begin(), boxes[1].end(),
-        [&](const FaceBox& x, const FaceBox& y) {
-          pairs.emplace_back(x.info(), y.info());
-        },
-        kBoxCutoff, CGAL::Box_intersection_d::CLOSED);
-    std::sort(pairs.begin(), pairs.end());
+    // The faces are listed in increasing order, so the pairs come sorted.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs =
+        meeting_box_pairs(boxes[0], boxes[1],
+                          [](std::uint32_t, std::uint32_t) { return true; });
+    for (auto& [x, y] : pairs) {
+      x = face[0][x];
+      y = face[1][y];
+    }
     counters_.face_pairs = pairs.size();
     const std::size_t chunks = (pairs.size() + 255) / 256;
     std::vector<std::vector<Segment>> found(chunks);
@@ -1029,44 +1025,41 @@ bool rounding_kept_valid(const PairUnion& u) {
     for (int i = 0; i < 3; ++i) t.points[i] = mesh.vertices[t.ids[i]];
     return t;
   };
-  // Boxes with explicit ids: the self-intersection copies them.
-  using Box = CGAL::Box_intersection_d::Box_with_info_d<
-      double, 3, std::uint32_t, CGAL::Box_intersection_d::ID_EXPLICIT>;
   std::vector<Box> changed;
   std::vector<Box> unchanged;
+  std::vector<std::uint32_t> changed_face;  // per box
+  std::vector<std::uint32_t> unchanged_face;
   for (const std::uint32_t f : u.contact_faces) {
     const IndexedTriangle t = triangle(f);
-    CGAL::Bbox_3 b;
-    for (const glm::dvec3& p : t.points) b += point3(p).bbox();
+    Box b;
+    for (const glm::dvec3& p : t.points) b.add(p);
     const auto& ids = t.ids;
     if (ids[0] >= u.first_new || ids[1] >= u.first_new ||
         ids[2] >= u.first_new) {
       if (is_degenerate(t)) return false;
-      changed.emplace_back(b, f);
+      changed.push_back(b);
+      changed_face.push_back(f);
     } else {
-      unchanged.emplace_back(b, f);
+      unchanged.push_back(b);
+      unchanged_face.push_back(f);
     }
   }
-  // Each pair once: changed faces among themselves, then against the rest.
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  const auto add = [&](const Box& a, const Box& b) {
-    pairs.emplace_back(a.info(), b.info());
-  };
-  CGAL::box_self_intersection_d(changed.begin(), changed.end(), add,
-                                kBoxCutoff);
-  CGAL::box_intersection_d(changed.begin(), changed.end(), unchanged.begin(),
-                           unchanged.end(), add, kBoxCutoff);
+  // Each pair once: changed faces among themselves, then against the rest;
+  // once one pair is found to meet, the others are no longer tested.
   std::atomic<bool> ok{true};
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pairs.size(), 256),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      for (std::size_t i = range.begin(); i < range.end() && ok;
-                           ++i) {
-                        if (triangles_intersect(triangle(pairs[i].first),
-                                                triangle(pairs[i].second))) {
-                          ok = false;
-                        }
-                      }
-                    });
+  const auto meets = [&](std::uint32_t f, std::uint32_t g) {
+    if (ok && triangles_intersect(triangle(f), triangle(g))) ok = false;
+    return false;
+  };
+  (void)meeting_box_pairs(changed, [&](std::uint32_t i, std::uint32_t j) {
+    return meets(changed_face[i], changed_face[j]);
+  });
+  if (ok) {
+    (void)meeting_box_pairs(changed, unchanged,
+                            [&](std::uint32_t i, std::uint32_t j) {
+                              return meets(changed_face[i], unchanged_face[j]);
+                            });
+  }
   return ok;
 }
 

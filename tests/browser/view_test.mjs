@@ -63,6 +63,11 @@ async function modelAfter(seen, timeout = 60000) {
 // The canvas's pixels whose colour is clearly not a grey: the model (brown,
 // green, red where it overhangs) and not the background or the bed's grid.
 async function colouredPixels() {
+  // The page draws what changed at its next animation frame, after the
+  // model's version is set: two frames on, the model is on the canvas (on
+  // a loaded machine the first test once read the canvas before).
+  await page.evaluate(() => new Promise(
+    (done) => requestAnimationFrame(() => requestAnimationFrame(done))));
   return page.evaluate(() => {
     const canvas = document.getElementById('canvas');
     const copy = document.createElement('canvas');

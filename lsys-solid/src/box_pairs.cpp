@@ -32,49 +32,80 @@ using Pair = std::pair<std::uint32_t, std::uint32_t>;
 using Keep = std::function<bool(std::uint32_t, std::uint32_t)>;
 using Found = tbb::enumerable_thread_specific<std::vector<Pair>>;
 
-// Boxes over more cells than this are compared with every box rather than
-// listed in each cell (a leaf's face beside a dense seam, the base's
-// sectors): they are few, and listing them would fill the grid.
-constexpr double kMostCells = 4096.0;
+// Boxes over more cells than this are searched in a grid of their own,
+// coarser (a leaf's face beside a dense seam, a tube's side along a
+// branch): listed in each fine cell, the faces of blog tree B's leaves
+// were 33 million entries.
+constexpr double kMostCells = 64.0;
 
 bool meet(const Box& a, const Box& b) {
   return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y &&
          b.min.y <= a.max.y && a.min.z <= b.max.z && b.min.z <= a.max.z;
 }
 
-// Cells about two median boxes wide: a box then overlaps about eight, and
-// a cell holds a box's neighbours. Never finer than 2⁻²⁰ of the boxes'
-// span, so that cell coordinates fit the grid's 21 bits (and boxes of no
-// size do not make cells of none).
-CellGrid grid_for(std::initializer_list<const std::vector<Box>*> sets) {
-  std::vector<double> sides;
-  Box all;
-  for (const std::vector<Box>* boxes : sets) {
-    for (const Box& box : *boxes) {
-      const glm::dvec3 size = box.size();
-      sides.push_back(std::max({size.x, size.y, size.z}));
-      all.add(box.min);
-      all.add(box.max);
-    }
+// The median of the boxes' largest sides.
+double median_side(const std::vector<Box>& boxes) {
+  std::vector<double> sides(boxes.size());
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const glm::dvec3 size = boxes[i].size();
+    sides[i] = std::max({size.x, size.y, size.z});
   }
   const auto middle =
       sides.begin() + static_cast<std::ptrdiff_t>(sides.size() / 2);
   std::nth_element(sides.begin(), middle, sides.end());
+  return *middle;
+}
+
+// Cells two median boxes wide, the larger median of the sets: a box of one
+// then overlaps about eight, so at least half of each set is small. Never
+// finer than 2⁻²⁰ of the boxes' span, so that cell coordinates fit the
+// grid's 21 bits (and boxes of no size do not make cells of none).
+CellGrid grid_for(std::initializer_list<const std::vector<Box>*> sets) {
+  double median = 0.0;
+  Box all;
+  for (const std::vector<Box>* boxes : sets) {
+    median = std::max(median, median_side(*boxes));
+    for (const Box& box : *boxes) {
+      all.add(box.min);
+      all.add(box.max);
+    }
+  }
   const glm::dvec3 span = all.size();
   const double widest = std::max({span.x, span.y, span.z});
-  return CellGrid(std::max({2.0 * *middle, widest * 0x1p-20, 1e-300}));
+  return CellGrid(std::max({2.0 * median, widest * 0x1p-20, 1e-300}));
+}
+
+// The boxes over at most kMostCells cells of a grid, and the others, each
+// with its index in the set they came from.
+struct Split {
+  std::vector<Box> small;
+  std::vector<std::uint32_t> small_id;
+  std::vector<Box> large;
+  std::vector<std::uint32_t> large_id;
+};
+
+Split split(const CellGrid& grid, const std::vector<Box>& boxes) {
+  Split out;
+  for (std::uint32_t i = 0; i < boxes.size(); ++i) {
+    if (grid.count(boxes[i].min, boxes[i].max) > kMostCells) {
+      out.large.push_back(boxes[i]);
+      out.large_id.push_back(i);
+    } else {
+      out.small.push_back(boxes[i]);
+      out.small_id.push_back(i);
+    }
+  }
+  return out;
 }
 
 using Entry = std::pair<std::uint64_t, std::uint32_t>;
 
-// Boxes listed in the cells they overlap.
+// Boxes listed in the cells they overlap: (cell, box) for every cell of
+// every box, sorted, so that the boxes of each cell are a run, in
+// increasing order.
 struct Listed {
-  // (cell, box) for every cell of every box but the large ones, sorted:
-  // the boxes of each cell in a run, in increasing order.
   std::vector<Entry> entries;
   std::vector<std::size_t> runs;  // where each cell's run starts, and the end
-  std::vector<char> large;        // per box: over more than kMostCells
-  std::vector<std::uint32_t> large_ones;
 
   // The run of the cell `key`: [first, last) in entries, empty if none.
   [[nodiscard]] std::pair<std::size_t, std::size_t> run(
@@ -87,23 +118,18 @@ struct Listed {
   }
 };
 
+// @pre every box is over at most kMostCells cells.
 Listed list_in_cells(const CellGrid& grid, const std::vector<Box>& boxes) {
   const std::size_t n = boxes.size();
   Listed out;
   std::vector<std::size_t> first(n + 1, 0);
-  out.large.assign(n, 0);
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
-    const double cells = grid.count(boxes[i].min, boxes[i].max);
-    if (cells > kMostCells) {
-      out.large[i] = 1;
-    } else {
-      first[i + 1] = static_cast<std::size_t>(cells);
-    }
+    first[i + 1] =
+        static_cast<std::size_t>(grid.count(boxes[i].min, boxes[i].max));
   });
   std::partial_sum(first.begin(), first.end(), first.begin());
   out.entries.resize(first[n]);
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
-    if (out.large[i] != 0) return;
     std::size_t at = first[i];
     grid.for_each(boxes[i].min, boxes[i].max,
                   [&](std::uint64_t key, const glm::dvec3&) {
@@ -117,9 +143,6 @@ Listed list_in_cells(const CellGrid& grid, const std::vector<Box>& boxes) {
     }
   }
   out.runs.push_back(out.entries.size());
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (out.large[i] != 0) out.large_ones.push_back(i);
-  }
   return out;
 }
 
@@ -132,10 +155,10 @@ bool taken_in(const CellGrid& grid, std::uint64_t key, const Box& a,
          CellGrid::key(grid.cell_of(glm::max(a.min, b.min))) == key;
 }
 
-// The pairs the threads found, sorted, each once: cells 2²¹ apart share a
-// key (CellGrid), so a pair may come twice.
-std::vector<Pair> gathered(Found& found) {
-  std::vector<Pair> pairs;
+// The pairs the threads found and `more`, sorted, each once: cells 2²¹
+// apart share a key (CellGrid), so a pair may come twice.
+std::vector<Pair> gathered(Found& found, std::vector<Pair> more) {
+  std::vector<Pair> pairs = std::move(more);
   for (const std::vector<Pair>& part : found) {
     pairs.insert(pairs.end(), part.begin(), part.end());
   }
@@ -150,7 +173,10 @@ std::vector<Pair> meeting_box_pairs(const std::vector<Box>& boxes,
                                     const Keep& keep) {
   if (boxes.size() < 2) return {};
   const CellGrid grid = grid_for({&boxes});
-  const Listed listed = list_in_cells(grid, boxes);
+  const Split parts = split(grid, boxes);
+  const std::vector<Box>& small = parts.small;
+  const std::vector<std::uint32_t>& id = parts.small_id;
+  const Listed listed = list_in_cells(grid, small);
   const std::vector<Entry>& entries = listed.entries;
   const std::vector<std::size_t>& runs = listed.runs;
   Found found;
@@ -171,42 +197,46 @@ std::vector<Pair> meeting_box_pairs(const std::vector<Box>& boxes,
           }
           std::sort(in_cell.begin(), in_cell.end(),
                     [&](std::uint32_t a, std::uint32_t b) {
-                      return boxes[a].min.x < boxes[b].min.x ||
-                             (boxes[a].min.x == boxes[b].min.x && a < b);
+                      return small[a].min.x < small[b].min.x ||
+                             (small[a].min.x == small[b].min.x && a < b);
                     });
           for (std::size_t a = 0; a < in_cell.size(); ++a) {
-            const Box& box_a = boxes[in_cell[a]];
+            const Box& box_a = small[in_cell[a]];
             for (std::size_t b = a + 1; b < in_cell.size(); ++b) {
-              const Box& box_b = boxes[in_cell[b]];
+              const Box& box_b = small[in_cell[b]];
               if (box_b.min.x > box_a.max.x) break;
               if (!taken_in(grid, key, box_a, box_b)) continue;
-              const std::uint32_t i = std::min(in_cell[a], in_cell[b]);
-              const std::uint32_t j = std::max(in_cell[a], in_cell[b]);
+              const std::uint32_t i = std::min(id[in_cell[a]], id[in_cell[b]]);
+              const std::uint32_t j = std::max(id[in_cell[a]], id[in_cell[b]]);
               if (keep(i, j)) out.emplace_back(i, j);
             }
           }
         }
       });
-  // The large boxes against every box; a pair of two large ones from the
-  // first of them.
-  const std::vector<std::uint32_t>& large_ones = listed.large_ones;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, large_ones.size(), 1),
-                    [&](const tbb::blocked_range<std::size_t>& range) {
-                      std::vector<Pair>& out = found.local();
-                      for (std::size_t k = range.begin(); k < range.end();
-                           ++k) {
-                        const std::uint32_t i = large_ones[k];
-                        for (std::uint32_t j = 0; j < boxes.size(); ++j) {
-                          if (j == i || (listed.large[j] != 0 && j < i))
-                            continue;
-                          if (!meet(boxes[i], boxes[j])) continue;
-                          if (keep(std::min(i, j), std::max(i, j))) {
-                            out.emplace_back(std::min(i, j), std::max(i, j));
-                          }
-                        }
-                      }
-                    });
-  return gathered(found);
+  // The large boxes against the small ones and among themselves, each in a
+  // grid of their size.
+  std::vector<Pair> more;
+  const std::vector<std::uint32_t>& large_id = parts.large_id;
+  const auto ordered = [](std::uint32_t i, std::uint32_t j) {
+    return Pair{std::min(i, j), std::max(i, j)};
+  };
+  if (!parts.large.empty()) {
+    for (const auto& [a, b] : meeting_box_pairs(
+             parts.large, small, [&](std::uint32_t a, std::uint32_t b) {
+               const Pair p = ordered(large_id[a], id[b]);
+               return keep(p.first, p.second);
+             })) {
+      more.push_back(ordered(large_id[a], id[b]));
+    }
+    for (const auto& [a, b] :
+         meeting_box_pairs(parts.large, [&](std::uint32_t a, std::uint32_t b) {
+           const Pair p = ordered(large_id[a], large_id[b]);
+           return keep(p.first, p.second);
+         })) {
+      more.push_back(ordered(large_id[a], large_id[b]));
+    }
+  }
+  return gathered(found, std::move(more));
 }
 
 std::vector<Pair> meeting_box_pairs(const std::vector<Box>& first,
@@ -214,52 +244,54 @@ std::vector<Pair> meeting_box_pairs(const std::vector<Box>& first,
                                     const Keep& keep) {
   if (first.empty() || second.empty()) return {};
   const CellGrid grid = grid_for({&first, &second});
-  // The second set listed in cells; each box of the first looks in its own.
-  const Listed listed = list_in_cells(grid, second);
+  const Split one = split(grid, first);
+  const Split two = split(grid, second);
+  // The small boxes of the second set listed in cells; each small box of
+  // the first looks in its own.
+  const Listed listed = list_in_cells(grid, two.small);
   Found found;
   tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, first.size(), 256),
+      tbb::blocked_range<std::size_t>(0, one.small.size(), 256),
       [&](const tbb::blocked_range<std::size_t>& range) {
         std::vector<Pair>& out = found.local();
         for (std::size_t k = range.begin(); k < range.end(); ++k) {
-          const auto i = static_cast<std::uint32_t>(k);
-          const Box& box = first[i];
-          if (grid.count(box.min, box.max) > kMostCells) {
-            // Large: against every box of the second set.
-            for (std::uint32_t j = 0; j < second.size(); ++j) {
-              if (meet(box, second[j]) && keep(i, j)) out.emplace_back(i, j);
-            }
-            continue;
-          }
+          const Box& box = one.small[k];
+          const std::uint32_t i = one.small_id[k];
           grid.for_each(
               box.min, box.max, [&](std::uint64_t key, const glm::dvec3&) {
                 const auto [from, to] = listed.run(key);
                 for (std::size_t e = from; e < to; ++e) {
-                  const std::uint32_t j = listed.entries[e].second;
-                  if (taken_in(grid, key, box, second[j]) && keep(i, j)) {
+                  const std::uint32_t small = listed.entries[e].second;
+                  const std::uint32_t j = two.small_id[small];
+                  if (taken_in(grid, key, box, two.small[small]) &&
+                      keep(i, j)) {
                     out.emplace_back(i, j);
                   }
                 }
               });
         }
       });
-  // The large boxes of the second set against the boxes of the first that
-  // were not (those were compared with every box above).
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, listed.large_ones.size(), 1),
-      [&](const tbb::blocked_range<std::size_t>& range) {
-        std::vector<Pair>& out = found.local();
-        for (std::size_t k = range.begin(); k < range.end(); ++k) {
-          const std::uint32_t j = listed.large_ones[k];
-          for (std::uint32_t i = 0; i < first.size(); ++i) {
-            if (grid.count(first[i].min, first[i].max) > kMostCells) continue;
-            if (meet(first[i], second[j]) && keep(i, j)) {
-              out.emplace_back(i, j);
-            }
-          }
-        }
-      });
-  return gathered(found);
+  // The large boxes of the first set against the whole second set, and the
+  // large ones of the second against the small ones of the first, each in
+  // a grid of their size.
+  std::vector<Pair> more;
+  if (!one.large.empty()) {
+    for (const auto& [a, b] : meeting_box_pairs(
+             one.large, second, [&](std::uint32_t a, std::uint32_t b) {
+               return keep(one.large_id[a], b);
+             })) {
+      more.emplace_back(one.large_id[a], b);
+    }
+  }
+  if (!two.large.empty() && !one.small.empty()) {
+    for (const auto& [a, b] : meeting_box_pairs(
+             two.large, one.small, [&](std::uint32_t a, std::uint32_t b) {
+               return keep(one.small_id[b], two.large_id[a]);
+             })) {
+      more.emplace_back(one.small_id[b], two.large_id[a]);
+    }
+  }
+  return gathered(found, std::move(more));
 }
 
 }  // namespace lsolid

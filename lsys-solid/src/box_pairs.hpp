@@ -16,10 +16,10 @@ namespace lsolid {
 /// order. The pairs whose boxes meet are those CGAL's
 /// box_self_intersection_d finds over closed boxes; the answer depends on
 /// nothing but the boxes and `keep`. Found on oneTBB's threads in a uniform
-/// grid about two median boxes wide (the few boxes over too many of its
-/// cells are compared with every box); `keep` is called on those threads,
-/// once for each pair that meets.
-/// @pre every box has min <= max in each coordinate, all finite.
+/// grid about two median boxes wide; the boxes over more than 64 of its
+/// cells are searched, against the others and among themselves, in a grid
+/// as coarse as they are. `keep` is called on those threads, once for each
+/// pair that meets.
 [[nodiscard]] std::vector<std::pair<std::uint32_t, std::uint32_t>>
 meeting_box_pairs(
     const std::vector<Box>& boxes,

@@ -60,6 +60,21 @@ TEST(TrianglePair, FindsThePairsOfOverlappingBoxesAsCgalDoes) {
   EXPECT_TRUE(intersecting_pairs(indexed(two_boxes({3, 0, 0}))).empty());
 }
 
+TEST(TrianglePair, TestsNoPairOfTwoSettledTrianglesAndEveryOther) {
+  const TriangleMesh mesh = two_boxes({1, 0.5, 0.25});
+  const std::vector<IndexedTriangle> triangles = indexed(mesh);
+  const auto all = intersecting_pairs(triangles);
+  ASSERT_FALSE(all.empty());
+  // The first box's faces settled: every pair takes one face of each box,
+  // so all are still found.
+  std::vector<char> settled(triangles.size(), 0);
+  for (std::size_t i = 0; i < 12; ++i) settled[i] = 1;
+  EXPECT_EQ(intersecting_pairs(triangles, settled), all);
+  // Both settled (as a pass of rounding would never leave them): none is.
+  settled.assign(triangles.size(), 1);
+  EXPECT_TRUE(intersecting_pairs(triangles, settled).empty());
+}
+
 TEST(TrianglePair, ReportsADegenerateTriangleAloneAndLeavesItOut) {
   TriangleMesh mesh = box_mesh({0, 0, 0}, {1, 1, 1});
   // Collinear corners across the box's bottom face.

@@ -12,10 +12,14 @@
 #include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
 #include <CGAL/Polygon_mesh_processing/repair_self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <set>
+#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -65,6 +69,41 @@ std::vector<IndexedTriangle> indexed_triangles(const InexactMesh& mesh) {
   return out;
 }
 
+// A triangle by its corners' coordinates, from its least corner on: the
+// same key whichever corner a face starts from, its orientation kept.
+using CornerKey = std::array<double, 9>;
+
+CornerKey corner_key(const IndexedTriangle& t) {
+  const auto less = [](const glm::dvec3& a, const glm::dvec3& b) {
+    return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+  };
+  int first = 0;
+  for (int k = 1; k < 3; ++k) {
+    if (less(t.points[k], t.points[first])) first = k;
+  }
+  CornerKey key{};
+  for (int c = 0; c < 3; ++c) {
+    const glm::dvec3& p = t.points[(first + c) % 3];
+    key[3 * c] = p.x;
+    key[3 * c + 1] = p.y;
+    key[3 * c + 2] = p.z;
+  }
+  return key;
+}
+
+// Whether no two vertices share a point: then a triangle is its corners'
+// points, and two faces share a point exactly where they share a vertex.
+bool points_unique(const InexactMesh& mesh) {
+  std::vector<std::array<double, 3>> points;
+  points.reserve(mesh.number_of_vertices());
+  for (const auto v : mesh.vertices()) {
+    const InexactPoint& p = mesh.point(v);
+    points.push_back({p.x(), p.y(), p.z()});
+  }
+  tbb::parallel_sort(points.begin(), points.end());
+  return std::adjacent_find(points.begin(), points.end()) == points.end();
+}
+
 }  // namespace
 
 void accumulate(RoundingStats& total, const RoundingStats& later) {
@@ -85,6 +124,9 @@ Rounded round_and_repair(const TriangleMesh& input,
   RoundingStats stats;
   InexactMesh mesh = surface_mesh_or_throw<InexactMesh>(input, "round");
   bool clean = false;
+  // The faces the last pass found meeting no other, sorted, when its
+  // points were unique.
+  std::vector<CornerKey> settled;
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     stats.passes = pass + 1;
     snap(mesh, precision);
@@ -106,8 +148,22 @@ Rounded round_and_repair(const TriangleMesh& input,
     snap(mesh, precision);
     stats.slivers_removed += before - std::min(before, count_faces(mesh));
 
+    // A face as it was when the last pass found it meeting no other is
+    // not tested again against another such face: the second pass over
+    // blog tree B's union (1.7 million faces, 7 rebuilt by the first) took
+    // as long as the first.
+    const std::vector<IndexedTriangle> triangles = indexed_triangles(mesh);
+    std::vector<char> known(triangles.size(), 0);
+    if (!settled.empty() && points_unique(mesh)) {
+      tbb::parallel_for(std::size_t{0}, triangles.size(), [&](std::size_t i) {
+        known[i] = std::binary_search(settled.begin(), settled.end(),
+                                      corner_key(triangles[i]))
+                       ? 1
+                       : 0;
+      });
+    }
     const std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs =
-        intersecting_pairs(indexed_triangles(mesh));
+        intersecting_pairs(triangles, known);
     bool has_degenerate = false;
     for (const auto f : mesh.faces()) {
       if (PMP::is_degenerate_triangle_face(f, mesh)) {
@@ -123,6 +179,15 @@ Rounded round_and_repair(const TriangleMesh& input,
     for (const auto& [a, b] : pairs) {
       bad.insert(InexactMesh::Face_index(a));
       bad.insert(InexactMesh::Face_index(b));
+    }
+    settled.clear();
+    if (points_unique(mesh)) {
+      for (std::uint32_t i = 0; i < triangles.size(); ++i) {
+        if (!bad.contains(InexactMesh::Face_index(i))) {
+          settled.push_back(corner_key(triangles[i]));
+        }
+      }
+      tbb::parallel_sort(settled.begin(), settled.end());
     }
     stats.faces_rebuilt += bad.size();
     if (!bad.empty()) {

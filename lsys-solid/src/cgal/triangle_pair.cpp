@@ -17,6 +17,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "box_pairs.hpp"
@@ -180,6 +181,12 @@ bool triangles_intersect(const IndexedTriangle& a, const IndexedTriangle& b) {
 
 std::vector<std::pair<std::uint32_t, std::uint32_t>> intersecting_pairs(
     const std::vector<IndexedTriangle>& triangles) {
+  return intersecting_pairs(triangles, std::vector<char>(triangles.size(), 0));
+}
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>> intersecting_pairs(
+    const std::vector<IndexedTriangle>& triangles,
+    const std::vector<char>& settled) {
   using Pair = std::pair<std::uint32_t, std::uint32_t>;
   std::vector<Pair> out;
   // As CGAL's test does: a degenerate triangle is reported alone and left
@@ -192,10 +199,9 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> intersecting_pairs(
                         degenerate[i] = is_degenerate(triangles[i]) ? 1 : 0;
                       }
                     });
-  std::vector<Box> boxes;
-  std::vector<std::uint32_t> id;  // per box: its triangle
-  boxes.reserve(triangles.size());
-  id.reserve(triangles.size());
+  // The boxes of the triangles to search from, and of the settled ones.
+  std::array<std::vector<Box>, 2> boxes;
+  std::array<std::vector<std::uint32_t>, 2> id;  // per box: its triangle
   for (std::uint32_t i = 0; i < triangles.size(); ++i) {
     if (degenerate[i] != 0) {
       out.emplace_back(i, i);
@@ -203,19 +209,33 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> intersecting_pairs(
     }
     Box b;
     for (const glm::dvec3& p : triangles[i].points) b.add(p);
-    boxes.push_back(b);
-    id.push_back(i);
+    const std::size_t set = settled[i] != 0 ? 1 : 0;
+    boxes[set].push_back(b);
+    id[set].push_back(i);
   }
   // The pairs whose boxes meet, tested on the threads, neither triangle
   // degenerate (decided once above): CGAL's own test walks the halfedges
   // round both faces and checks each triangle for degeneracy, exactly, for
   // every pair (a third of blog tree B's rounding and check at n = 9).
+  const auto meets = [&](std::uint32_t f, std::uint32_t g) {
+    return proper_triangles_intersect(triangles[f], triangles[g]);
+  };
+  std::vector<Pair> found;
   for (const auto& [a, b] :
-       meeting_box_pairs(boxes, [&](std::uint32_t a, std::uint32_t b) {
-         return proper_triangles_intersect(triangles[id[a]], triangles[id[b]]);
+       meeting_box_pairs(boxes[0], [&](std::uint32_t a, std::uint32_t b) {
+         return meets(id[0][a], id[0][b]);
        })) {
-    out.emplace_back(id[a], id[b]);
+    found.emplace_back(id[0][a], id[0][b]);
   }
+  for (const auto& [a, b] : meeting_box_pairs(
+           boxes[0], boxes[1], [&](std::uint32_t a, std::uint32_t b) {
+             return meets(id[0][a], id[1][b]);
+           })) {
+    found.emplace_back(std::min(id[0][a], id[1][b]),
+                       std::max(id[0][a], id[1][b]));
+  }
+  std::sort(found.begin(), found.end());
+  out.insert(out.end(), found.begin(), found.end());
   return out;
 }
 

@@ -37,4 +37,13 @@ struct IndexedTriangle {
 [[nodiscard]] std::vector<std::pair<std::uint32_t, std::uint32_t>>
 intersecting_pairs(const std::vector<IndexedTriangle>& triangles);
 
+/// intersecting_pairs, where the triangles i with `settled[i]` set are
+/// known to meet no other settled triangle (a pass of rounding tested them
+/// as they are): pairs of two settled triangles are neither searched nor
+/// tested.
+/// @pre settled.size() == triangles.size().
+[[nodiscard]] std::vector<std::pair<std::uint32_t, std::uint32_t>>
+intersecting_pairs(const std::vector<IndexedTriangle>& triangles,
+                   const std::vector<char>& settled);
+
 }  // namespace lsolid

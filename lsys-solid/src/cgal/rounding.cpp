@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <tuple>
 #include <unordered_map>
@@ -91,9 +92,11 @@ CornerKey corner_key(const IndexedTriangle& t) {
   return key;
 }
 
-// Whether no two vertices share a point: then a triangle is its corners'
-// points, and two faces share a point exactly where they share a vertex.
-bool points_unique(const InexactMesh& mesh) {
+// The points two or more vertices share, sorted: a face with a corner
+// there is not taken as known from one pass to the next. Elsewhere a face
+// is its corners, and two faces share a point exactly where they share a
+// vertex. (Snapped to floats, vertices a hair apart come together.)
+std::vector<std::array<double, 3>> shared_points(const InexactMesh& mesh) {
   std::vector<std::array<double, 3>> points;
   points.reserve(mesh.number_of_vertices());
   for (const auto v : mesh.vertices()) {
@@ -101,7 +104,24 @@ bool points_unique(const InexactMesh& mesh) {
     points.push_back({p.x(), p.y(), p.z()});
   }
   tbb::parallel_sort(points.begin(), points.end());
-  return std::adjacent_find(points.begin(), points.end()) == points.end();
+  std::vector<std::array<double, 3>> shared;
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    if (points[i] == points[i - 1] &&
+        (shared.empty() || shared.back() != points[i])) {
+      shared.push_back(points[i]);
+    }
+  }
+  return shared;
+}
+
+// Whether a corner of `t` is one of the `shared` points.
+bool at_shared_point(const IndexedTriangle& t,
+                     const std::vector<std::array<double, 3>>& shared) {
+  return std::any_of(
+      t.points.begin(), t.points.end(), [&](const glm::dvec3& p) {
+        return std::binary_search(shared.begin(), shared.end(),
+                                  std::array<double, 3>{p.x, p.y, p.z});
+      });
 }
 
 }  // namespace
@@ -124,8 +144,8 @@ Rounded round_and_repair(const TriangleMesh& input,
   RoundingStats stats;
   InexactMesh mesh = surface_mesh_or_throw<InexactMesh>(input, "round");
   bool clean = false;
-  // The faces the last pass found meeting no other, sorted, when its
-  // points were unique.
+  // The faces the last pass found meeting no other, but those at points
+  // two vertices shared, sorted.
   std::vector<CornerKey> settled;
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     stats.passes = pass + 1;
@@ -154,10 +174,18 @@ Rounded round_and_repair(const TriangleMesh& input,
     // as long as the first.
     const std::vector<IndexedTriangle> triangles = indexed_triangles(mesh);
     std::vector<char> known(triangles.size(), 0);
-    if (!settled.empty() && points_unique(mesh)) {
+    // Found only when a pass needs them: most builds take one pass.
+    std::optional<std::vector<std::array<double, 3>>> shared_at;
+    const auto shared = [&]() -> const std::vector<std::array<double, 3>>& {
+      if (!shared_at) shared_at = shared_points(mesh);
+      return *shared_at;
+    };
+    if (!settled.empty()) {
+      const std::vector<std::array<double, 3>>& points = shared();
       tbb::parallel_for(std::size_t{0}, triangles.size(), [&](std::size_t i) {
         known[i] = std::binary_search(settled.begin(), settled.end(),
-                                      corner_key(triangles[i]))
+                                      corner_key(triangles[i])) &&
+                           !at_shared_point(triangles[i], points)
                        ? 1
                        : 0;
       });
@@ -181,14 +209,14 @@ Rounded round_and_repair(const TriangleMesh& input,
       bad.insert(InexactMesh::Face_index(b));
     }
     settled.clear();
-    if (points_unique(mesh)) {
-      for (std::uint32_t i = 0; i < triangles.size(); ++i) {
-        if (!bad.contains(InexactMesh::Face_index(i))) {
-          settled.push_back(corner_key(triangles[i]));
-        }
+    const std::vector<std::array<double, 3>>& points = shared();
+    for (std::uint32_t i = 0; i < triangles.size(); ++i) {
+      if (!bad.contains(InexactMesh::Face_index(i)) &&
+          !at_shared_point(triangles[i], points)) {
+        settled.push_back(corner_key(triangles[i]));
       }
-      tbb::parallel_sort(settled.begin(), settled.end());
     }
+    tbb::parallel_sort(settled.begin(), settled.end());
     stats.faces_rebuilt += bad.size();
     if (!bad.empty()) {
       // CGAL refuses (a precondition, as an exception) to rebuild around a

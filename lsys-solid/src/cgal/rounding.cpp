@@ -20,7 +20,6 @@
 #include <cmath>
 #include <optional>
 #include <set>
-#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -70,26 +69,8 @@ std::vector<IndexedTriangle> indexed_triangles(const InexactMesh& mesh) {
   return out;
 }
 
-// A triangle by its corners' coordinates, from its least corner on: the
-// same key whichever corner a face starts from, its orientation kept.
-using CornerKey = std::array<double, 9>;
-
-CornerKey corner_key(const IndexedTriangle& t) {
-  const auto less = [](const glm::dvec3& a, const glm::dvec3& b) {
-    return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
-  };
-  int first = 0;
-  for (int k = 1; k < 3; ++k) {
-    if (less(t.points[k], t.points[first])) first = k;
-  }
-  CornerKey key{};
-  for (int c = 0; c < 3; ++c) {
-    const glm::dvec3& p = t.points[(first + c) % 3];
-    key[3 * c] = p.x;
-    key[3 * c + 1] = p.y;
-    key[3 * c + 2] = p.z;
-  }
-  return key;
+TriangleKey corner_key(const IndexedTriangle& t) {
+  return triangle_key(t.points[0], t.points[1], t.points[2]);
 }
 
 // The points two or more vertices share, sorted: a face with a corner
@@ -146,7 +127,7 @@ Rounded round_and_repair(const TriangleMesh& input,
   bool clean = false;
   // The faces the last pass found meeting no other, but those at points
   // two vertices shared, sorted.
-  std::vector<CornerKey> settled;
+  std::vector<TriangleKey> settled;
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     stats.passes = pass + 1;
     snap(mesh, precision);

@@ -46,6 +46,7 @@
 #include "lsolid/errors.hpp"
 #include "plane_quadric.hpp"
 #include "surface_distance.hpp"
+#include "vertex_key.hpp"
 
 namespace lsolid {
 namespace {
@@ -678,30 +679,13 @@ std::size_t count_short_edges(const TriangleMesh& mesh, double length_mm) {
   return count;
 }
 
-// A triangle by its corners' coordinates, whichever corner comes first:
-// collapses move no vertex, so a triangle the decimation left alone has the
-// same key in the input and the output.
-using TriangleKey = std::array<std::uint64_t, 9>;
-
+// A triangle by its corners (triangle_key): collapses move no vertex, so a
+// triangle the decimation left alone has the same key in the input and the
+// output.
 TriangleKey key_of(const TriangleMesh& mesh,
                    const std::array<std::uint32_t, 3>& t) {
-  std::array<std::array<std::uint64_t, 3>, 3> corners{};
-  for (int c = 0; c < 3; ++c) {
-    const glm::dvec3& p = mesh.vertices[t[static_cast<std::size_t>(c)]];
-    corners[static_cast<std::size_t>(c)] = {std::bit_cast<std::uint64_t>(p.x),
-                                            std::bit_cast<std::uint64_t>(p.y),
-                                            std::bit_cast<std::uint64_t>(p.z)};
-  }
-  // Rotate the smallest corner first; the orientation stays.
-  const std::size_t first = static_cast<std::size_t>(
-      std::min_element(corners.begin(), corners.end()) - corners.begin());
-  TriangleKey key{};
-  for (std::size_t c = 0; c < 3; ++c) {
-    const auto& q = corners[(first + c) % 3];
-    std::copy(q.begin(), q.end(),
-              key.begin() + static_cast<std::ptrdiff_t>(3 * c));
-  }
-  return key;
+  return triangle_key(mesh.vertices[t[0]], mesh.vertices[t[1]],
+                      mesh.vertices[t[2]]);
 }
 
 using TriangleSet = std::unordered_set<TriangleKey, boost::hash<TriangleKey>>;

@@ -58,8 +58,10 @@ double median_side(const std::vector<Box>& boxes) {
 
 // Cells two median boxes wide, the larger median of the sets: a box of one
 // then overlaps about eight, so at least half of each set is small. Never
-// finer than 2⁻²⁰ of the boxes' span, so that cell coordinates fit the
-// grid's 21 bits (and boxes of no size do not make cells of none).
+// finer than 2⁻²⁰ of the boxes' span, counted from the lowest corner, so
+// that cell coordinates fit the grid's 21 bits (and boxes of no size do not
+// make cells of none, nor a few tiny boxes far from the origin coordinates
+// beyond an int).
 CellGrid grid_for(std::initializer_list<const std::vector<Box>*> sets) {
   double median = 0.0;
   Box all;
@@ -72,7 +74,7 @@ CellGrid grid_for(std::initializer_list<const std::vector<Box>*> sets) {
   }
   const glm::dvec3 span = all.size();
   const double widest = std::max({span.x, span.y, span.z});
-  return CellGrid(std::max({2.0 * median, widest * 0x1p-20, 1e-300}));
+  return CellGrid(std::max({2.0 * median, widest * 0x1p-20, 1e-300}), all.min);
 }
 
 // The boxes over at most kMostCells cells of a grid, and the others, each

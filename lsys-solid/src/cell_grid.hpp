@@ -13,15 +13,24 @@ namespace lsolid {
 /// indexes of the decimation (SurfaceDistance, ModIntersectionGuardT) and
 /// of the tube mesher (a tube that comes back to itself). A cell's key
 /// packs its integer coordinates, 21 bits each: cells 2²¹ apart share a
-/// key, which only adds candidates that the exact tests reject.
+/// key, which only adds candidates that the exact tests reject. Cells are
+/// counted from `origin`; a grid whose cells are fine beside the distance
+/// of its points from the origin must set it, or cell coordinates leave
+/// the range of int.
 class CellGrid {
  public:
-  explicit CellGrid(double cell_mm = 1.0) : cell_mm_(cell_mm) {}
+  explicit CellGrid(double cell_mm = 1.0, const glm::dvec3& origin = {})
+      : cell_mm_(cell_mm), origin_(origin) {}
 
   [[nodiscard]] double cell_mm() const noexcept { return cell_mm_; }
 
+  /// The cell of `p`; coordinates beyond ±2²⁹ are clamped there (cells
+  /// that far out share keys anyway), so that they and their differences
+  /// are ints however fine the cells.
   [[nodiscard]] glm::ivec3 cell_of(const glm::dvec3& p) const {
-    return glm::ivec3(glm::floor(p / cell_mm_));
+    constexpr double kFar = 0x1p29;
+    return glm::ivec3(
+        glm::clamp(glm::floor((p - origin_) / cell_mm_), -kFar, kFar));
   }
 
   [[nodiscard]] static std::uint64_t key(const glm::ivec3& c) noexcept {
@@ -46,7 +55,8 @@ class CellGrid {
     for (int x = a.x; x <= b.x; ++x) {
       for (int y = a.y; y <= b.y; ++y) {
         for (int z = a.z; z <= b.z; ++z) {
-          visit(key({x, y, z}), (glm::dvec3(x, y, z) + 0.5) * cell_mm_);
+          visit(key({x, y, z}),
+                origin_ + (glm::dvec3(x, y, z) + 0.5) * cell_mm_);
         }
       }
     }
@@ -54,6 +64,7 @@ class CellGrid {
 
  private:
   double cell_mm_;
+  glm::dvec3 origin_;
 };
 
 }  // namespace lsolid

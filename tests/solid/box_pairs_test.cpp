@@ -111,6 +111,20 @@ TEST(BoxPairs, CountsBoxesThatOnlyTouchAsMeeting) {
   EXPECT_EQ(pairs, expected);
 }
 
+TEST(BoxPairs, FindsTinyBoxesFarFromTheOrigin) {
+  // Slivers a few nanometres wide 500 mm out: cells as fine as the boxes,
+  // counted from the origin, would be 10¹⁴ cells out (the rounding of a
+  // leaf's overlapping polygons met this).
+  const glm::dvec3 far(500.0, -500.0, 250.0);
+  const std::vector<Box> boxes = {box(far, far + 2e-9),
+                                  box(far + 1e-9, far + 3e-9),
+                                  box(far + 4e-9, far + 5e-9)};
+  const auto all = [](std::uint32_t, std::uint32_t) { return true; };
+  EXPECT_EQ(meeting_box_pairs(boxes, all), (Pairs{{0, 1}}));
+  EXPECT_EQ(meeting_box_pairs({boxes[0]}, {boxes[1], boxes[2]}, all),
+            (Pairs{{0, 0}}));
+}
+
 TEST(BoxPairs, FindsNothingAmongFewerThanTwoBoxes) {
   const auto all = [](std::uint32_t, std::uint32_t) { return true; };
   EXPECT_TRUE(meeting_box_pairs({}, all).empty());

@@ -79,11 +79,16 @@ void for_each_cell_through(const CellGrid& grid, const glm::dvec3& a,
   constexpr double kPieceCells = 64.0;
   const double reach = 0.8669 * grid.cell_mm();
   std::vector<std::uint64_t> keys;
+  // A triangle that is not split visits each cell of its box once, and
+  // gives its cells to `visit` as it finds them; pieces of a split one may
+  // share cells, which are gathered and given once each.
+  bool split = false;
   const auto collect = [&](const auto& self, const glm::dvec3& p,
                            const glm::dvec3& q, const glm::dvec3& r) -> void {
     const glm::dvec3 lo = glm::min(glm::min(p, q), r);
     const glm::dvec3 hi = glm::max(glm::max(p, q), r);
     if (grid.count(lo, hi) > kPieceCells) {
+      split = true;
       const glm::dvec3 pq = (p + q) * 0.5;
       const glm::dvec3 qr = (q + r) * 0.5;
       const glm::dvec3 rp = (r + p) * 0.5;
@@ -103,10 +108,16 @@ void for_each_cell_through(const CellGrid& grid, const glm::dvec3& a,
     grid.for_each(lo, hi, [&](std::uint64_t key, const glm::dvec3& centre) {
       if (std::abs(glm::dot(unit, centre) - offset) > slab) return;
       const glm::dvec3 d = closest_point_on_triangle(centre, p, q, r) - centre;
-      if (glm::dot(d, d) <= reach * reach) keys.push_back(key);
+      if (glm::dot(d, d) > reach * reach) return;
+      if (split) {
+        keys.push_back(key);
+      } else {
+        visit(key);
+      }
     });
   };
   collect(collect, a, b, c);
+  if (!split) return;
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   for (const std::uint64_t key : keys) visit(key);

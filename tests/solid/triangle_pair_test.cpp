@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <vector>
 
 #include "cgal/exact_checks.hpp"
@@ -149,6 +151,52 @@ TEST(TrianglePair, FindsThePairsOfAFoldedFanAsCgalDoes) {
         << folded;
     EXPECT_EQ(pairs.empty(), !folded);
   }
+}
+
+TEST(TrianglePair, AnswersForProperTrianglesAsCgalDoes) {
+  // Random triangles on a coarse lattice (so that many touch or lie in one
+  // plane): two apart, two along an edge (the second running it the other
+  // way, as in a mesh), and an open fan of three round one vertex, whose
+  // first and last share only that vertex (two triangles alone would pinch
+  // it, which CGAL's conversion splits). None degenerate, the pairs that
+  // meet are those CGAL's self-intersection test finds in a mesh of them.
+  std::mt19937 random(7);
+  std::uniform_int_distribution<int> coordinate(0, 3);
+  const auto point = [&] {
+    return glm::dvec3(coordinate(random), coordinate(random),
+                      coordinate(random));
+  };
+  int compared = 0;
+  int meeting = 0;
+  for (int round = 0; round < 3000; ++round) {
+    TriangleMesh mesh;
+    mesh.vertices = {point(), point(), point(), point(), point(), point()};
+    switch (round % 3) {
+      case 0:
+        mesh.triangles = {{0, 1, 2}, {3, 4, 5}};
+        break;
+      case 1:
+        mesh.triangles = {{0, 1, 2}, {1, 0, 3}};
+        break;
+      default:
+        mesh.triangles = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}};
+    }
+    const std::vector<IndexedTriangle> t = indexed(mesh);
+    if (std::any_of(t.begin(), t.end(), is_degenerate)) continue;
+    ++compared;
+    std::size_t pairs = 0;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      for (std::size_t j = i + 1; j < t.size(); ++j) {
+        pairs += proper_triangles_intersect(t[i], t[j]) ? 1 : 0;
+      }
+    }
+    meeting += pairs > 0 ? 1 : 0;
+    EXPECT_EQ(pairs, exact_checks(mesh, true, false).self_intersecting_pairs)
+        << round;
+  }
+  EXPECT_GT(compared, 1000);
+  EXPECT_GT(meeting, 100);
+  EXPECT_LT(meeting, compared - 100);
 }
 
 }  // namespace

@@ -99,7 +99,8 @@ bool apart_round_corner(const std::array<Point, 3>& p,
          parts(b[1], b[0], a);
 }
 
-// triangles_intersect for triangles neither of which is degenerate.
+}  // namespace
+
 bool proper_triangles_intersect(const IndexedTriangle& a,
                                 const IndexedTriangle& b) {
   int count = 0;
@@ -166,8 +167,6 @@ bool proper_triangles_intersect(const IndexedTriangle& a,
       return true;
   }
 }
-
-}  // namespace
 
 bool is_degenerate(const IndexedTriangle& t) {
   return CGAL::collinear(point(t.points[0]), point(t.points[1]),

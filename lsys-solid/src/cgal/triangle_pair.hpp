@@ -27,6 +27,12 @@ struct IndexedTriangle {
 [[nodiscard]] bool triangles_intersect(const IndexedTriangle& a,
                                        const IndexedTriangle& b);
 
+/// triangles_intersect for two triangles known not to be degenerate (a
+/// caller that tests one triangle against many decides that once).
+/// @pre !is_degenerate(a) && !is_degenerate(b)
+[[nodiscard]] bool proper_triangles_intersect(const IndexedTriangle& a,
+                                              const IndexedTriangle& b);
+
 /// The pairs of `triangles` (of one mesh) that meet anywhere but at the
 /// vertices or the edge they share, the pairs CGAL's self-intersection test
 /// (PMP::self_intersections) finds on a Surface_mesh of the same faces and

@@ -37,6 +37,7 @@
 #include "golden.hpp"
 #include "lsolid/errors.hpp"
 #include "lsolid/rounding.hpp"
+#include "settled_rounding.hpp"
 
 namespace lsolid {
 namespace {
@@ -186,9 +187,10 @@ bool round_new_points(ExactMesh& mesh) {
 // starts from doubles and no rational grows across unions; dense models
 // (ABOP fig. 1.24b) spent most of their time in GMP otherwise. Kept only
 // if the result is a closed, self-intersection-free surface.
-std::optional<TriangleMesh> mended(const TriangleMesh& rounded) {
+std::optional<TriangleMesh> mended(const TriangleMesh& rounded,
+                                   const std::vector<char>& settled = {}) {
   Rounded repaired = round_and_repair(
-      rounded, {.precision = {.kind = Precision::Kind::Double}});
+      rounded, {.precision = {.kind = Precision::Kind::Double}}, settled);
   TriangleMesh& out = repaired.mesh;
   const std::optional<InexactMesh> check = to_surface_mesh<InexactMesh>(out);
   // A clean repair was last tested as it is returned: no face pair meets.
@@ -206,6 +208,20 @@ std::optional<TriangleMesh> mended(const TriangleMesh& rounded) {
     return std::nullopt;
   }
   return std::move(out);
+}
+
+// The faces of an exact union that no crossing cut (every corner an
+// operand's vertex): they meet no other such face (the operands are free
+// of self-intersections, and faces of the two that met would have been
+// cut), and rounding the new points leaves them where they are.
+std::vector<char> uncut_faces(const exact_union::PairUnion& u) {
+  std::vector<char> out(u.mesh.triangles.size(), 0);
+  for (std::size_t f = 0; f < out.size(); ++f) {
+    const auto& t = u.mesh.triangles[f];
+    out[f] =
+        t[0] < u.first_new && t[1] < u.first_new && t[2] < u.first_new ? 1 : 0;
+  }
+  return out;
 }
 
 bool round_and_mend(ExactMesh& mesh) {
@@ -382,7 +398,7 @@ class Unioner {
     if (!round_points) return std::move(u.mesh);
     std::optional<TriangleMesh> out = exact_union::rounding_kept_valid(u)
                                           ? std::move(u.mesh)
-                                          : mended(u.mesh);
+                                          : mended(u.mesh, uncut_faces(u));
     if (!out) {
       last_failure_ = "its new points could not be rounded to doubles";
       unrounded_ = true;

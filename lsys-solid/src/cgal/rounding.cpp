@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "conversion.hpp"
+#include "settled_rounding.hpp"
 #include "triangle_pair.hpp"
 #include "vertex_key.hpp"
 
@@ -117,6 +118,12 @@ void accumulate(RoundingStats& total, const RoundingStats& later) {
 
 Rounded round_and_repair(const TriangleMesh& input,
                          const RoundingOptions& options) {
+  return round_and_repair(input, options, {});
+}
+
+Rounded round_and_repair(const TriangleMesh& input,
+                         const RoundingOptions& options,
+                         const std::vector<char>& settled_faces) {
   const Precision& precision = options.precision;
   // On a coarse grid (OpenSCAD's 10⁻³ mm) an edge or a cap a few steps
   // small is as good as degenerate: what is collapsed or flipped grows with
@@ -126,8 +133,15 @@ Rounded round_and_repair(const TriangleMesh& input,
   InexactMesh mesh = surface_mesh_or_throw<InexactMesh>(input, "round");
   bool clean = false;
   // The faces the last pass found meeting no other, but those at points
-  // two vertices shared, sorted.
+  // two vertices shared, sorted; before the first, those the caller knows.
   std::vector<TriangleKey> settled;
+  for (std::size_t i = 0; i < settled_faces.size(); ++i) {
+    if (settled_faces[i] == 0) continue;
+    const auto& t = input.triangles[i];
+    settled.push_back(triangle_key(input.vertices[t[0]], input.vertices[t[1]],
+                                   input.vertices[t[2]]));
+  }
+  tbb::parallel_sort(settled.begin(), settled.end());
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     stats.passes = pass + 1;
     snap(mesh, precision);

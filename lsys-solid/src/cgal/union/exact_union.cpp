@@ -214,6 +214,11 @@ struct FacePoint {
   // degree, tight where the point is well defined; the homogeneous form,
   // then Mpzf, decide what it cannot.
   std::array<Interval, 2> xy;
+  // The exact homogeneous coordinates, once a predicate the intervals
+  // could not decide needed them: a point near a degeneracy (a crossing on
+  // the shared edge of two nearly coplanar faces) is mostly asked about
+  // again, by orientations and incircle tests alike.
+  mutable std::unique_ptr<Homogeneous<CGAL::Mpzf>> exact;
 };
 
 FacePoint face_point(const ImplicitPoint& def, std::uint32_t id,
@@ -306,9 +311,13 @@ struct Traits {
     const FacePoint* p = nullptr;
   };
   // A point's exact homogeneous coordinates, for what the intervals left.
-  static Homogeneous<CGAL::Mpzf> exact(const Point_2& point,
-                                       const Projection* proj) {
-    return homogeneous<CGAL::Mpzf>(*point.p->def, proj->origin);
+  static const Homogeneous<CGAL::Mpzf>& exact(const Point_2& point,
+                                              const Projection* proj) {
+    if (!point.p->exact) {
+      point.p->exact = std::make_unique<Homogeneous<CGAL::Mpzf>>(
+          homogeneous<CGAL::Mpzf>(*point.p->def, proj->origin));
+    }
+    return *point.p->exact;
   }
   struct Segment_2 {
     Point_2 a;
@@ -399,10 +408,10 @@ struct Traits {
         if (s.is_certain()) return s.make_certain();
       }
       ++proj->orient_exact;
-      const auto ea = exact(a, proj);
-      const auto eb = exact(b, proj);
-      const auto ec = exact(c, proj);
-      const auto ed = exact(d, proj);
+      const auto& ea = exact(a, proj);
+      const auto& eb = exact(b, proj);
+      const auto& ec = exact(c, proj);
+      const auto& ed = exact(d, proj);
       return sign_of(
           incircle<CGAL::Mpzf>({&ea, &eb, &ec, &ed}, proj->ax, proj->ay));
     }

@@ -42,6 +42,7 @@
 #include "cgal/kernel.hpp"
 #include "cgal/triangle_pair.hpp"
 #include "cgal/union/implicit_point.hpp"
+#include "cgal/union/ray_parity.hpp"
 #include "shells.hpp"
 #include "union_find.hpp"
 
@@ -915,10 +916,20 @@ class Engine {
 
   // Whether vertex v of operand m lies inside the other operand: for a
   // surface that no crossing touches (a part inside another, or beside it
-  // within its box).
+  // within its box). By ray parity along an axis (ray_parity.hpp), and by
+  // CGAL's random rays where a ray along each axis meets an edge.
   bool inside_other(int m, std::uint32_t v) {
     ++counters_.inside_tests;
     const int o = 1 - m;
+    if (!rays_[o]) rays_[o] = ray_surface(*ops_[o].mesh);
+    const glm::dvec3& p = ops_[m].mesh->vertices[v];
+    for (int axis = 0; axis < 3; ++axis) {
+      const std::optional<RaySide> side = side_by_ray(*rays_[o], p, axis);
+      if (!side) continue;
+      if (*side == RaySide::kOnSurface)
+        throw Failure{"a vertex lies on the other operand", true};
+      return *side == RaySide::kInside;
+    }
     if (!side_of_[o]) {
       std::optional<InexactMesh> surface =
           to_surface_mesh<InexactMesh>(*ops_[o].mesh);
@@ -1019,6 +1030,7 @@ class Engine {
   std::array<std::unordered_map<std::uint64_t, std::vector<std::uint32_t>>, 2>
       edge_points_;
   std::array<std::vector<ImplicitPoint>, 2> vertex_points_;
+  std::array<std::optional<RaySurface>, 2> rays_;
   std::array<std::unique_ptr<InexactMesh>, 2> surface_;
   std::array<std::unique_ptr<CGAL::Side_of_triangle_mesh<InexactMesh, K>>, 2>
       side_of_;

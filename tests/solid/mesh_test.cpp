@@ -28,11 +28,7 @@ TEST(Mesh, AppendsWithoutABoolean) {
 
 // A box with a sealed cavity: the cavity is its own shell, facing inward.
 TriangleMesh box_with_cavity() {
-  TriangleMesh mesh = box_mesh({0, 0, 0}, {4, 4, 4});
-  TriangleMesh cavity = box_mesh({1, 1, 1}, {2, 2, 2});
-  for (auto& t : cavity.triangles) std::swap(t[1], t[2]);
-  append(mesh, cavity);
-  return mesh;
+  return testing::box_with_cavity({0, 0, 0}, {4, 4, 4}, {1, 1, 1}, {2, 2, 2});
 }
 
 TEST(Mesh, FillsSealedCavitiesAndKeepsTheOuterSurface) {

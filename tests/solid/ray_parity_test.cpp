@@ -16,11 +16,8 @@ using lsolid::testing::box_mesh;
 // A box with a box-shaped hole inside (the inner surface turned inward):
 // points in the wall are inside, points in the hole outside.
 TriangleMesh hollow_box() {
-  TriangleMesh mesh = box_mesh({0, 0, 0}, {4, 4, 4});
-  TriangleMesh hole = box_mesh({1, 1, 1}, {3, 3, 3});
-  for (auto& t : hole.triangles) std::swap(t[1], t[2]);
-  append(mesh, hole);
-  return mesh;
+  return lsolid::testing::box_with_cavity({0, 0, 0}, {4, 4, 4}, {1, 1, 1},
+                                          {3, 3, 3});
 }
 
 std::optional<RaySide> first_decided(const RaySurface& surface,

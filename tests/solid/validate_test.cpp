@@ -25,11 +25,9 @@ TEST(Validate, AcceptsAClosedOutwardBox) {
 
 TEST(Validate, ListsPiecesLargestFirstAndTellsCavitiesApart) {
   TriangleMesh m = box_mesh({0, 0, 0}, {1, 1, 1});
-  append(m, box_mesh({5, 0, 0}, {7, 2, 2}));
   // A cavity inside the large box: a shell of negative volume.
-  TriangleMesh cavity = box_mesh({5.5, 0.5, 0.5}, {6, 1, 1});
-  for (auto& t : cavity.triangles) std::swap(t[1], t[2]);
-  append(m, cavity);
+  append(m, testing::box_with_cavity({5, 0, 0}, {7, 2, 2}, {5.5, 0.5, 0.5},
+                                     {6, 1, 1}));
   const ValidationReport r = validate(m);
   EXPECT_TRUE(r.is_printable());
   EXPECT_EQ(r.shells, 3U);

@@ -28,6 +28,18 @@ inline TriangleMesh box_mesh(const glm::dvec3& lo, const glm::dvec3& hi) {
   return m;
 }
 
+/// A box from `lo` to `hi` with a sealed box-shaped cavity from `cavity_lo`
+/// to `cavity_hi`: a second shell, facing inward.
+inline TriangleMesh box_with_cavity(const glm::dvec3& lo, const glm::dvec3& hi,
+                                    const glm::dvec3& cavity_lo,
+                                    const glm::dvec3& cavity_hi) {
+  TriangleMesh mesh = box_mesh(lo, hi);
+  TriangleMesh cavity = box_mesh(cavity_lo, cavity_hi);
+  for (auto& t : cavity.triangles) std::swap(t[1], t[2]);
+  append(mesh, cavity);
+  return mesh;
+}
+
 /// Asserts what a slicer needs: closed, manifold, outward, no
 /// self-intersections, positive volume; and the number of shells.
 inline void expect_printable(const TriangleMesh& mesh, std::size_t shells = 1) {

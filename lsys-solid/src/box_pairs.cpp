@@ -181,35 +181,51 @@ std::vector<Pair> meeting_box_pairs(const std::vector<Box>& boxes,
   const Listed listed = list_in_cells(grid, small);
   const std::vector<Entry>& entries = listed.entries;
   const std::vector<std::size_t>& runs = listed.runs;
+  // The cell of each box's lowest corner: the pair of two boxes that meet
+  // is taken in the cell of the lowest corner of what they share, whose
+  // coordinates are the larger of theirs (cells are monotone in x, y, z).
+  std::vector<glm::ivec3> low_cell(small.size());
+  tbb::parallel_for(std::size_t{0}, small.size(), [&](std::size_t i) {
+    low_cell[i] = grid.cell_of(small[i].min);
+  });
   Found found;
-  tbb::enumerable_thread_specific<std::vector<std::uint32_t>> scratch;
-  // A cell's boxes are swept along x, so that only those whose x ranges
-  // overlap are compared (cells along a seam hold hundreds of small
-  // triangles).
+  // A cell's boxes, copied side by side with their ids and lowest cells,
+  // are swept along x, so that only those whose x ranges overlap are
+  // compared (cells along a seam hold hundreds of small triangles).
+  struct InCell {
+    Box box;
+    glm::ivec3 low;
+    std::uint32_t id;
+  };
+  tbb::enumerable_thread_specific<std::vector<InCell>> scratch;
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, runs.size() - 1, 64),
       [&](const tbb::blocked_range<std::size_t>& range) {
         std::vector<Pair>& out = found.local();
-        std::vector<std::uint32_t>& in_cell = scratch.local();
+        std::vector<InCell>& in_cell = scratch.local();
         for (std::size_t r = range.begin(); r < range.end(); ++r) {
           const std::uint64_t key = entries[runs[r]].first;
           in_cell.clear();
           for (std::size_t k = runs[r]; k < runs[r + 1]; ++k) {
-            in_cell.push_back(entries[k].second);
+            const std::uint32_t b = entries[k].second;
+            in_cell.push_back({small[b], low_cell[b], id[b]});
           }
           std::sort(in_cell.begin(), in_cell.end(),
-                    [&](std::uint32_t a, std::uint32_t b) {
-                      return small[a].min.x < small[b].min.x ||
-                             (small[a].min.x == small[b].min.x && a < b);
+                    [](const InCell& a, const InCell& b) {
+                      return a.box.min.x < b.box.min.x ||
+                             (a.box.min.x == b.box.min.x && a.id < b.id);
                     });
           for (std::size_t a = 0; a < in_cell.size(); ++a) {
-            const Box& box_a = small[in_cell[a]];
+            const InCell& cell_a = in_cell[a];
             for (std::size_t b = a + 1; b < in_cell.size(); ++b) {
-              const Box& box_b = small[in_cell[b]];
-              if (box_b.min.x > box_a.max.x) break;
-              if (!taken_in(grid, key, box_a, box_b)) continue;
-              const std::uint32_t i = std::min(id[in_cell[a]], id[in_cell[b]]);
-              const std::uint32_t j = std::max(id[in_cell[a]], id[in_cell[b]]);
+              const InCell& cell_b = in_cell[b];
+              if (cell_b.box.min.x > cell_a.box.max.x) break;
+              if (!meet(cell_a.box, cell_b.box) ||
+                  CellGrid::key(glm::max(cell_a.low, cell_b.low)) != key) {
+                continue;
+              }
+              const std::uint32_t i = std::min(cell_a.id, cell_b.id);
+              const std::uint32_t j = std::max(cell_a.id, cell_b.id);
               if (keep(i, j)) out.emplace_back(i, j);
             }
           }

@@ -187,14 +187,9 @@ Rounded round_and_repair(const TriangleMesh& input,
     }
     const std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs =
         intersecting_pairs(triangles, known);
-    bool has_degenerate = false;
-    for (const auto f : mesh.faces()) {
-      if (PMP::is_degenerate_triangle_face(f, mesh)) {
-        has_degenerate = true;
-        break;
-      }
-    }
-    if (pairs.empty() && !has_degenerate) {
+    // Every degenerate face is among the pairs (paired with itself), so no
+    // pair means no degenerate face either.
+    if (pairs.empty()) {
       clean = true;
       break;
     }

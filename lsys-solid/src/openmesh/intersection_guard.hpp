@@ -142,13 +142,15 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
       }
       cell.resize(kept);
     };
-    if (grid_.count(lo, hi) <= kLargeCells) {
+    if (grid_.count(lo, hi) <= kFanBoxCells) {
       for_cells(lo, hi, visit);
     } else {
-      // A large fan (a leaf's face across hundreds of cells): only the cells
-      // its triangles pass through, where any face that meets one has an
-      // entry. Its box's cells were, past the number of cells filled, all
-      // of them: most of the blog's tree B's decimation.
+      // A fan over more than a few cells (a leaf's face across hundreds):
+      // only the cells its triangles pass through, where any face that
+      // meets one has an entry. Its box's cells were, past the number of
+      // cells filled, all of them: most of the blog's tree B's decimation;
+      // and past 3 × 3 × 3 cells, still 11% of it (69.7 s against 61.7 s,
+      // the same bytes).
       visit(large_);
       for (const IndexedTriangle& t : fresh_) {
         for_each_cell_through(grid_, t.points[0], t.points[1], t.points[2],
@@ -249,6 +251,7 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
   }
 
   static constexpr double kLargeCells = 512.0;
+  static constexpr double kFanBoxCells = 27.0;
   static constexpr double kHugeCells = double(1 << 16);
   CellGrid grid_;
   // A face in a cell, as it was when inserted: stale once the face's

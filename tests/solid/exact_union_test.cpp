@@ -197,6 +197,26 @@ TEST(ExactUnion, LeavesFacesThatTouchToTheCorefinementWhichUnitesThemExactly) {
   EXPECT_EQ(label_shells(u.mesh).count, 1U);
 }
 
+// Two boxes that touch face on are united first (the fewest faces), by the
+// corefinement; the prism that crosses both is then united with their union
+// by the exact engine again, as the union's points were all rounded.
+TEST(ExactUnion, ReturnsToTheExactEngineAfterFacesThatTouch) {
+  std::vector<Part> parts{
+      {box_mesh({0, 0, 0}, {2, 2, 2}), "a"},
+      {box_mesh({2, 0.5, 0.5}, {3, 1.5, 1.5}), "b"},
+      {prism({1.3, -1, 1.1}, {2.7, 3, 1.2}, 0.3, 16, 0.1), "c"}};
+  const UnionResult u = union_parts(parts);
+  EXPECT_EQ(u.stats.degenerate_unions, 1U);
+  EXPECT_EQ(u.stats.booleans, 2U);
+  EXPECT_EQ(u.stats.exact_unions, 1U);
+  const UnionResult oracle =
+      union_parts(parts, {.engine = UnionEngine::Corefinement});
+  const double volume = signed_volume(oracle.mesh);
+  EXPECT_NEAR(signed_volume(u.mesh), volume, 1e-9 * volume);
+  EXPECT_EQ(label_shells(u.mesh).count, 1U);
+  expect_printable(u.mesh);
+}
+
 TEST(ExactUnion, RefusesFacesThatTouchAsADegeneracy) {
   FilterCounters filters;
   const PairUnion u =

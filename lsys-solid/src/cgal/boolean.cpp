@@ -137,13 +137,25 @@ bool valid_near(const InexactMesh& rounded,
 // tested with exact predicates on the rounded coordinates), they are
 // rounded, and the next union starts from doubles again. Where it would not,
 // the exact points stay. Returns true if the points were rounded.
+// Whether the point's coordinates are not all doubles (a point the union
+// constructed, whose approximation is an interval).
+bool is_new_point(const Exact::Point_3& p) {
+  const auto& a = CGAL::approx(p);
+  return !a.x().is_point() || !a.y().is_point() || !a.z().is_point();
+}
+
+bool has_new_points(const ExactMesh& mesh) {
+  const auto vertices = mesh.vertices();
+  return std::any_of(vertices.begin(), vertices.end(),
+                     [&](auto v) { return is_new_point(mesh.point(v)); });
+}
+
 bool round_new_points(ExactMesh& mesh) {
   using Face = InexactMesh::Face_index;
   std::vector<bool> is_new(mesh.number_of_vertices(), false);
   bool any = false;
   for (const auto v : mesh.vertices()) {
-    const auto& a = CGAL::approx(mesh.point(v));
-    if (!a.x().is_point() || !a.y().is_point() || !a.z().is_point()) {
+    if (is_new_point(mesh.point(v))) {
       is_new[static_cast<std::size_t>(v)] = true;
       any = true;
     }
@@ -499,15 +511,28 @@ class Unioner {
       }
       if (!ok) continue;
       out = canonical_order(out);
+      bool in_doubles = false;
       if (round_points) {
         if (round_new_points(out) || round_and_mend(out)) {
           ++stats_.rounded;
+          in_doubles = true;
+        } else {
+          in_doubles = !has_new_points(out);
         }
       }
       ++stats_.booleans;
-      a.exact = std::move(out);
       a.box += b.box;
       a.parts.insert(a.parts.end(), b.parts.begin(), b.parts.end());
+      if (in_doubles && engine_ == UnionEngine::ExactCrossings) {
+        // Back to the exact engine for the unions after this one: kept
+        // exact, every later union that took in these parts went to the
+        // corefinement too (blog tree A: one union of touching leaves
+        // made 21 s of its 22 s of union).
+        a.plain = to_triangle_mesh(out);
+        a.exact.reset();
+        return a;
+      }
+      a.exact = std::move(out);
       return a;
     }
     // A shift moves a whole operand, which may hold many parts; where that

@@ -15,6 +15,7 @@
 
 #include "lsolid/errors.hpp"
 #include "lsolid/mesh.hpp"
+#include "triangle_pair.hpp"
 
 namespace lsolid {
 
@@ -68,6 +69,31 @@ std::optional<Mesh> to_surface_mesh(const TriangleMesh& m) {
           soup.points, soup.polygons, stitched);
       return stitched;
     }
+  }
+  return out;
+}
+
+/// The faces as triangles of the mesh's vertex indices and points, in face
+/// order, for intersecting_pairs (the exact test CGAL's self_intersections
+/// makes, on the threads).
+/// @pre no face or vertex is marked removed (collect_garbage).
+template <typename Mesh>
+std::vector<IndexedTriangle> indexed_triangles(const Mesh& mesh) {
+  CGAL_precondition(!mesh.has_garbage());
+  std::vector<IndexedTriangle> out;
+  out.reserve(mesh.number_of_faces());
+  for (const auto f : mesh.faces()) {
+    IndexedTriangle t;
+    std::size_t k = 0;
+    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+      if (k == 3) break;
+      const auto& p = mesh.point(v);
+      t.ids[k] = static_cast<std::uint32_t>(v.idx());
+      t.points[k] = glm::dvec3(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                               CGAL::to_double(p.z()));
+      ++k;
+    }
+    out.push_back(t);
   }
   return out;
 }

@@ -11,7 +11,6 @@
 
 #include "part_queries.hpp"
 
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/convex_hull_3.h>
 
 #include <algorithm>
@@ -63,18 +62,11 @@ intersecting_triangle_pairs(const TriangleMesh& mesh) {
   if (!surface || surface->number_of_faces() != mesh.triangles.size()) {
     throw GeometryError("stitched parts do not form an oriented surface");
   }
-  std::vector<std::pair<InexactMesh::Face_index, InexactMesh::Face_index>>
-      pairs;
-  PMP::self_intersections(*surface, std::back_inserter(pairs));
-  // to_surface_mesh adds the faces in order, so their indices are the
-  // triangles' indices.
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> out;
-  out.reserve(pairs.size());
-  for (const auto& [f, g] : pairs) {
-    out.emplace_back(static_cast<std::uint32_t>(f),
-                     static_cast<std::uint32_t>(g));
-  }
-  return out;
+  // The surface's own vertices tell shared corners apart, as they did for
+  // CGAL's self_intersections; its faces are the triangles in order. The
+  // pairs come in one order whatever the threads, which the part builder's
+  // choice of the junction to give up depends on.
+  return intersecting_pairs(indexed_triangles(*surface));
 }
 
 }  // namespace lsolid

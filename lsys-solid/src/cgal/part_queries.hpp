@@ -19,7 +19,9 @@ namespace lsolid {
     const std::vector<glm::dvec3>& points);
 
 /// The pairs of triangles of `mesh` that intersect other than along the
-/// edge or at the vertex they share, decided with exact predicates.
+/// edge or at the vertex they share, decided with exact predicates: each
+/// degenerate triangle paired with itself, then the others as (i, j),
+/// i < j, in increasing order (intersecting_pairs), whatever the threads.
 /// @pre `mesh` is an oriented 2-manifold (closed or not).
 /// @throws GeometryError if it is not.
 [[nodiscard]] std::vector<std::pair<std::uint32_t, std::uint32_t>>

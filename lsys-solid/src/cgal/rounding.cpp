@@ -48,28 +48,6 @@ std::size_t count_faces(const InexactMesh& mesh) {
   return mesh.number_of_faces();
 }
 
-// The faces as triangles of vertex indices, for intersecting_pairs (the
-// exact test CGAL's self_intersections makes, on the threads).
-// @pre no face or vertex is marked removed (collect_garbage).
-std::vector<IndexedTriangle> indexed_triangles(const InexactMesh& mesh) {
-  CGAL_precondition(!mesh.has_garbage());
-  std::vector<IndexedTriangle> out;
-  out.reserve(mesh.number_of_faces());
-  for (const auto f : mesh.faces()) {
-    IndexedTriangle t;
-    std::size_t k = 0;
-    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
-      if (k == 3) break;
-      const InexactPoint& p = mesh.point(v);
-      t.ids[k] = static_cast<std::uint32_t>(v.idx());
-      t.points[k] = glm::dvec3(p.x(), p.y(), p.z());
-      ++k;
-    }
-    out.push_back(t);
-  }
-  return out;
-}
-
 TriangleKey corner_key(const IndexedTriangle& t) {
   return triangle_key(t.points[0], t.points[1], t.points[2]);
 }

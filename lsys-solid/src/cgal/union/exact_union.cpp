@@ -21,7 +21,6 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/intersections.h>
-#include <mpfr.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -986,11 +985,14 @@ class Engine {
   }
 
   // The point rounded to doubles: from an interval around its offset from
-  // the edge's first end, as tight as one unit in the last place, else
-  // exactly (Mpzf, then MPFR's rounding to nearest).
+  // the edge's first end, as tight as one unit in the last place, else from
+  // its exact homogeneous coordinates (Mpzf), each as a tight interval: the
+  // middle of their quotient, within two units in the last place. Rounding
+  // to nearest through rationals (Gmpq, then MPFR) was a tenth of the
+  // bush's union; what the rounding must keep, validity, is tested after.
   static glm::dvec3 rounded(const ImplicitPoint& point) {
     glm::dvec3 out;
-    bool done = true;
+    std::array<bool, 3> done{};
     {
       CGAL::Protect_FPU_rounding<true> guard;
       const Homogeneous<Interval> h = homogeneous<Interval>(point, point.p);
@@ -998,23 +1000,22 @@ class Engine {
         const Interval x = h.xyz[k] / h.w + Interval(point.p[k]);
         if (x.inf() == x.sup() || std::nextafter(x.inf(), x.sup()) == x.sup()) {
           out[k] = x.inf();
-        } else {
-          done = false;
+          done[k] = true;
         }
       }
     }
-    if (done) return out;
+    if (done[0] && done[1] && done[2]) return out;
     const Homogeneous<CGAL::Mpzf> h =
         homogeneous<CGAL::Mpzf>(point, glm::dvec3(0.0));
-    const CGAL::Gmpq w(h.w);
-    mpfr_t r;
-    mpfr_init2(r, 53);
-    for (int k = 0; k < 3; ++k) {
-      const CGAL::Gmpq x = CGAL::Gmpq(h.xyz[k]) / w;
-      mpfr_set_q(r, x.mpq(), MPFR_RNDN);
-      out[k] = mpfr_get_d(r, MPFR_RNDN);
+    std::array<Interval, 3> x;
+    {
+      CGAL::Protect_FPU_rounding<true> guard;
+      const Interval w(h.w.to_interval());
+      for (int k = 0; k < 3; ++k) x[k] = Interval(h.xyz[k].to_interval()) / w;
     }
-    mpfr_clear(r);
+    for (int k = 0; k < 3; ++k) {
+      if (!done[k]) out[k] = x[k].inf() + (x[k].sup() - x[k].inf()) / 2.0;
+    }
     return out;
   }
 

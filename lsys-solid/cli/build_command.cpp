@@ -141,9 +141,13 @@ void print_report(const SolidReport& r, bool united) {
   if (united) {
     fmt::print(
         "rounding: {} pass{}, {} slivers removed, {} intersecting faces "
-        "rebuilt; volume changed by {:+.4f} mm³\n",
+        "rebuilt{}; volume changed by {:+.4f} mm³\n",
         r.rounding.passes, r.rounding.passes == 1 ? "" : "es",
         r.rounding.slivers_removed, r.rounding.faces_rebuilt,
+        r.rounding.slivers_kept
+            ? " (slivers kept but where faces met: collapsing them all "
+              "left faces that meet)"
+            : "",
         r.rounding.volume_change_mm3);
   }
   fmt::print(

@@ -23,6 +23,10 @@ struct RoundingStats {
   /// The volume of the result less that of the input, in mm³, summed over
   /// calls.
   double volume_change_mm3 = 0.0;
+  /// Repairing with slivers collapsed left faces that meet, and the mesh
+  /// was rounded again from the start with slivers collapsed only where
+  /// rebuilding alone made no progress.
+  bool slivers_kept = false;
 };
 
 /// How to round.
@@ -54,7 +58,11 @@ void accumulate(RoundingStats& total, const RoundingStats& later);
 /// "Rounding"); rounding them makes degenerate and self-intersecting faces.
 /// Each pass rounds, collapses edges shorter than 10⁻⁴ mm, flips caps lower
 /// than that, and rebuilds the faces that still intersect (CGAL's
-/// experimental::remove_self_intersections), until none is left. Every
+/// experimental::remove_self_intersections), until none is left. If faces
+/// still meet after the last pass, the mesh is repaired again from the
+/// start collapsing and flipping slivers only where a pass of rebuilding
+/// made no progress (RoundingStats::slivers_kept), and that is kept if it
+/// leaves none. Every
 /// coordinate of the result is representable in the output format, so
 /// validating the result validates the file.
 /// @pre the mesh is closed and 2-manifold.

@@ -34,6 +34,11 @@ struct RoundingOptions {
   /// What the file keeps of a coordinate (floats for STL, doubles for OFF
   /// and OBJ, grids for 3MF and OpenSCAD).
   Precision precision;
+  /// Whether a repair that leaves faces meeting is tried again with slivers
+  /// collapsed only where rebuilding made no progress (round_and_repair).
+  /// The union's own mends, which have other ways out (a shift, the
+  /// corefinement), do not.
+  bool retry_keeping_slivers = true;
 };
 
 /// A rounded mesh and what it took.

@@ -201,8 +201,11 @@ bool round_new_points(ExactMesh& mesh) {
 // if the result is a closed, self-intersection-free surface.
 std::optional<TriangleMesh> mended(const TriangleMesh& rounded,
                                    const std::vector<char>& settled = {}) {
-  Rounded repaired = round_and_repair(
-      rounded, {.precision = {.kind = Precision::Kind::Double}}, settled);
+  Rounded repaired =
+      round_and_repair(rounded,
+                       {.precision = {.kind = Precision::Kind::Double},
+                        .retry_keeping_slivers = false},
+                       settled);
   TriangleMesh& out = repaired.mesh;
   const std::optional<InexactMesh> check = to_surface_mesh<InexactMesh>(out);
   // A clean repair was last tested as it is returned: no face pair meets.

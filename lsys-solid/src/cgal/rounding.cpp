@@ -274,7 +274,7 @@ Rounded round_and_repair(const TriangleMesh& input,
                          const RoundingOptions& options,
                          const std::vector<char>& settled_faces) {
   Rounded first = round_in_passes(input, options, settled_faces, true);
-  if (first.clean) return first;
+  if (first.clean || !options.retry_keeping_slivers) return first;
   // CGAL's collapses and flips test nothing around them: in a dense union
   // (Lparser's Menger cube at n = 4, round tubes overlapping face on face)
   // collapsing 3,668 slivers made 2,425 intersecting pairs out of 677, and

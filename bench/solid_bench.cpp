@@ -195,6 +195,13 @@ BENCHMARK_CAPTURE(build, plant_1_26_multi_material, "abop-1.26-plant.ls", 5,
                   true)
     ->Unit(benchmark::kSecond)
     ->Iterations(1);
+// Lparser's Menger cube at its own n = 4 (from the dialect corpus): 400
+// round tubes as wide as 1.43 times their length, overlapping face on face,
+// so that every union has faces that touch.
+BENCHMARK_CAPTURE(build, lparser_menger_cube_n4,
+                  "../tests/data/dialects/lparser/menger-cube.ls", 4)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1);
 
 }  // namespace
 

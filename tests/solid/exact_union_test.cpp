@@ -4,10 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
 #include <random>
+#include <set>
 #include <vector>
 
 #include "lsolid/boolean.hpp"
@@ -195,6 +198,54 @@ TEST(ExactUnion, LeavesFacesThatTouchToTheCorefinementWhichUnitesThemExactly) {
       << u.stats.degenerate_reason;
   EXPECT_DOUBLE_EQ(signed_volume(u.mesh), 9.0);
   EXPECT_EQ(label_shells(u.mesh).count, 1U);
+}
+
+// The faces with no new corner are the operands' own faces, whole; every
+// other face has a corner that is no vertex of either operand.
+TEST(ExactUnion, TellsThePiecesOfCutFacesByTheirNewCorners) {
+  const TriangleMesh a = prism({0, 0, 0}, {4, 0.3, 0.2}, 1.0, 12, 0.1);
+  const TriangleMesh b = prism({2, -3, 0.1}, {2.2, 3, -0.3}, 0.7, 9, 0.4);
+  FilterCounters filters;
+  const PairUnion u = unite_pair(a, b, filters);
+  ASSERT_TRUE(u.failure.empty()) << u.failure;
+  std::set<std::array<double, 3>> operand_points;
+  std::set<std::array<std::array<double, 3>, 3>> operand_faces;
+  for (const TriangleMesh* m : {&a, &b}) {
+    for (const glm::dvec3& p : m->vertices)
+      operand_points.insert({p.x, p.y, p.z});
+    for (const auto& t : m->triangles) {
+      std::array<std::array<double, 3>, 3> corners;
+      for (int i = 0; i < 3; ++i) {
+        const glm::dvec3& p = m->vertices[t[i]];
+        corners[i] = {p.x, p.y, p.z};
+      }
+      std::rotate(corners.begin(),
+                  std::min_element(corners.begin(), corners.end()),
+                  corners.end());
+      operand_faces.insert(corners);
+    }
+  }
+  std::size_t cut = 0;
+  for (std::uint32_t f = 0; f < u.mesh.triangles.size(); ++f) {
+    std::array<std::array<double, 3>, 3> corners;
+    bool all_operand = true;
+    for (int i = 0; i < 3; ++i) {
+      const glm::dvec3& p = u.mesh.vertices[u.mesh.triangles[f][i]];
+      corners[i] = {p.x, p.y, p.z};
+      all_operand = all_operand && operand_points.contains(corners[i]);
+    }
+    std::rotate(corners.begin(),
+                std::min_element(corners.begin(), corners.end()),
+                corners.end());
+    if (has_new_corner(u, f)) {
+      ++cut;
+      EXPECT_FALSE(all_operand) << f;
+    } else {
+      EXPECT_TRUE(operand_faces.contains(corners)) << f;
+    }
+  }
+  EXPECT_GT(cut, 0U);
+  EXPECT_LT(cut, u.mesh.triangles.size());
 }
 
 // Two boxes that touch face on are united first (the fewest faces), by the

@@ -231,10 +231,8 @@ std::optional<TriangleMesh> mended(const TriangleMesh& rounded,
 // cut), and rounding the new points leaves them where they are.
 std::vector<char> uncut_faces(const exact_union::PairUnion& u) {
   std::vector<char> out(u.mesh.triangles.size(), 0);
-  for (std::size_t f = 0; f < out.size(); ++f) {
-    const auto& t = u.mesh.triangles[f];
-    out[f] =
-        t[0] < u.first_new && t[1] < u.first_new && t[2] < u.first_new ? 1 : 0;
+  for (std::uint32_t f = 0; f < out.size(); ++f) {
+    out[f] = exact_union::has_new_corner(u, f) ? 0 : 1;
   }
   return out;
 }

@@ -1039,6 +1039,12 @@ class Engine {
 
 }  // namespace
 
+bool has_new_corner(const PairUnion& u, std::uint32_t face) {
+  const auto& t = u.mesh.triangles[face];
+  return std::any_of(t.begin(), t.end(),
+                     [&](std::uint32_t v) { return v >= u.first_new; });
+}
+
 bool rounding_kept_valid(const PairUnion& u) {
   const TriangleMesh& mesh = u.mesh;
   const auto triangle = [&](std::uint32_t f) {
@@ -1055,9 +1061,7 @@ bool rounding_kept_valid(const PairUnion& u) {
     const IndexedTriangle t = triangle(f);
     Box b;
     for (const glm::dvec3& p : t.points) b.add(p);
-    const auto& ids = t.ids;
-    if (ids[0] >= u.first_new || ids[1] >= u.first_new ||
-        ids[2] >= u.first_new) {
+    if (has_new_corner(u, f)) {
       if (is_degenerate(t)) return false;
       changed.push_back(b);
       changed_face.push_back(f);

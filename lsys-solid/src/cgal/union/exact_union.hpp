@@ -49,6 +49,12 @@ struct PairUnion {
   PairCounters counters;
 };
 
+/// Whether a corner of face `face` of the union is a new point (the face
+/// is a piece of a cut face): only those faces moved when the new points
+/// were rounded.
+/// @pre face < u.mesh.triangles.size()
+[[nodiscard]] bool has_new_corner(const PairUnion& u, std::uint32_t face);
+
 /// Whether rounding the new points kept the union free of degenerate and
 /// intersecting faces (exact predicates on the rounded coordinates; only
 /// faces in `u.contact_faces` can have changed or be met).

@@ -130,13 +130,6 @@ bool valid_near(const InexactMesh& rounded,
   return !PMP::does_self_intersect(range, rounded);
 }
 
-// The vertices a union created are lazy exact points whose exact values
-// (rationals) grow with every level of the reduction; most of the union's
-// time went into GMP for them. Where rounding them to doubles provably keeps
-// the mesh valid (no face near them becomes degenerate or intersecting,
-// tested with exact predicates on the rounded coordinates), they are
-// rounded, and the next union starts from doubles again. Where it would not,
-// the exact points stay. Returns true if the points were rounded.
 // Whether the point's coordinates are not all doubles (a point the union
 // constructed, whose approximation is an interval).
 bool is_new_point(const Exact::Point_3& p) {
@@ -150,6 +143,13 @@ bool has_new_points(const ExactMesh& mesh) {
                      [&](auto v) { return is_new_point(mesh.point(v)); });
 }
 
+// The vertices a union created are lazy exact points whose exact values
+// (rationals) grow with every level of the reduction; most of the union's
+// time went into GMP for them. Where rounding them to doubles provably keeps
+// the mesh valid (no face near them becomes degenerate or intersecting,
+// tested with exact predicates on the rounded coordinates), they are
+// rounded, and the next union starts from doubles again. Where it would not,
+// the exact points stay. Returns true if the points were rounded.
 bool round_new_points(ExactMesh& mesh) {
   using Face = InexactMesh::Face_index;
   std::vector<bool> is_new(mesh.number_of_vertices(), false);

@@ -215,26 +215,26 @@ Rounded round_in_passes(const TriangleMesh& input,
     // pass collapses the slivers among its corners.
     stalled = !collapse_slivers && pairs.size() >= last_pairs ? stalled + 1 : 0;
     last_pairs = pairs.size();
+    const auto for_each_corner = [&](const auto& body) {
+      for (const InexactMesh::Face_index f : bad) {
+        for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+          body(v);
+      }
+    };
     for (int ring = 0; ring < stalled; ++ring) {
       std::set<InexactMesh::Face_index> grown = bad;
-      for (const InexactMesh::Face_index f : bad) {
-        for (const auto v :
-             CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
-          for (const auto g : CGAL::faces_around_target(mesh.halfedge(v), mesh))
-            if (g != InexactMesh::null_face()) grown.insert(g);
-        }
-      }
+      for_each_corner([&](InexactMesh::Vertex_index v) {
+        for (const auto g : CGAL::faces_around_target(mesh.halfedge(v), mesh))
+          if (g != InexactMesh::null_face()) grown.insert(g);
+      });
       bad = std::move(grown);
     }
     knot.clear();
     if (stalled > 0) {
-      for (const InexactMesh::Face_index f : bad) {
-        for (const auto v :
-             CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
-          const InexactPoint& p = mesh.point(v);
-          knot.push_back({p.x(), p.y(), p.z()});
-        }
-      }
+      for_each_corner([&](InexactMesh::Vertex_index v) {
+        const InexactPoint& p = mesh.point(v);
+        knot.push_back({p.x(), p.y(), p.z()});
+      });
       std::sort(knot.begin(), knot.end());
     }
     settled.clear();

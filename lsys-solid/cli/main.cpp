@@ -15,6 +15,7 @@
 #include "commands.hpp"
 #include "lsolid/errors.hpp"
 #include "lsys/diagnostic.hpp"
+#include "memory.hpp"
 
 namespace {
 
@@ -41,6 +42,7 @@ Documentation: docs/cli.md, docs/language.md, docs/turtle.md.)";
 }  // namespace
 
 int main(int argc, char** argv) {
+  lsolid::cli::keep_freed_memory();
   // Reports are held until the end and written by one flush, whose failure
   // then names its cause (a full disk); a terminal keeps its line buffer.
   static std::array<char, std::size_t{1} << 16U> report_buffer{};

@@ -18,6 +18,7 @@
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <glm/common.hpp>
 #include <initializer_list>
@@ -104,19 +105,52 @@ using Entry = std::pair<std::uint64_t, std::uint32_t>;
 
 // Boxes listed in the cells they overlap: (cell, box) for every cell of
 // every box, sorted, so that the boxes of each cell are a run, in
-// increasing order.
+// increasing order; and the runs by cell, in open addressing (a
+// multiplicative hash, linear probing, at most half full). A binary search
+// of the runs for each cell of each box (millions of runs on blog tree B,
+// twenty-odd dependent reads a cell) was a sixth of the exact union's time.
 struct Listed {
   std::vector<Entry> entries;
   std::vector<std::size_t> runs;  // where each cell's run starts, and the end
+  std::vector<std::uint64_t> slot_key;  // a cell's key, or kEmpty
+  std::vector<std::uint32_t> slot_run;  // its run
+  int slot_bits = 1;
+
+  // Keys use 63 bits (CellGrid::key), so this is none.
+  static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+
+  [[nodiscard]] std::size_t slot_of(std::uint64_t key) const {
+    return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ULL) >>
+                                    (64 - slot_bits));
+  }
+
+  // Fills the table from the runs.
+  void index_runs() {
+    const std::size_t count = runs.size() - 1;
+    slot_bits = std::max(1, static_cast<int>(std::bit_width(2 * count)));
+    slot_key.assign(std::size_t{1} << slot_bits, kEmpty);
+    slot_run.assign(slot_key.size(), 0);
+    const std::size_t mask = slot_key.size() - 1;
+    for (std::size_t r = 0; r < count; ++r) {
+      const std::uint64_t key = entries[runs[r]].first;
+      std::size_t s = slot_of(key);
+      while (slot_key[s] != kEmpty) s = (s + 1) & mask;
+      slot_key[s] = key;
+      slot_run[s] = static_cast<std::uint32_t>(r);
+    }
+  }
 
   // The run of the cell `key`: [first, last) in entries, empty if none.
   [[nodiscard]] std::pair<std::size_t, std::size_t> run(
       std::uint64_t key) const {
-    const auto it = std::lower_bound(
-        runs.begin(), runs.end() - 1, key,
-        [&](std::size_t at, std::uint64_t k) { return entries[at].first < k; });
-    if (it == runs.end() - 1 || entries[*it].first != key) return {0, 0};
-    return {*it, *(it + 1)};
+    const std::size_t mask = slot_key.size() - 1;
+    for (std::size_t s = slot_of(key);; s = (s + 1) & mask) {
+      if (slot_key[s] == key) {
+        const std::uint32_t r = slot_run[s];
+        return {runs[r], runs[r + 1]};
+      }
+      if (slot_key[s] == kEmpty) return {0, 0};
+    }
   }
 };
 
@@ -265,30 +299,46 @@ std::vector<Pair> meeting_box_pairs(const std::vector<Box>& first,
   const Split one = split(grid, first);
   const Split two = split(grid, second);
   // The small boxes of the second set listed in cells; each small box of
-  // the first looks in its own.
-  const Listed listed = list_in_cells(grid, two.small);
-  Found found;
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, one.small.size(), 256),
-      [&](const tbb::blocked_range<std::size_t>& range) {
-        std::vector<Pair>& out = found.local();
-        for (std::size_t k = range.begin(); k < range.end(); ++k) {
-          const Box& box = one.small[k];
-          const std::uint32_t i = one.small_id[k];
-          grid.for_each(
-              box.min, box.max, [&](std::uint64_t key, const glm::dvec3&) {
-                const auto [from, to] = listed.run(key);
-                for (std::size_t e = from; e < to; ++e) {
-                  const std::uint32_t small = listed.entries[e].second;
-                  const std::uint32_t j = two.small_id[small];
-                  if (taken_in(grid, key, box, two.small[small]) &&
-                      keep(i, j)) {
-                    out.emplace_back(i, j);
-                  }
-                }
-              });
-        }
-      });
+  // the first looks in its own. The pairs of each box of the first are
+  // sorted on their own and the boxes taken in order, in fixed chunks, so
+  // that the pairs come sorted without sorting them all (tens of millions
+  // for the exact union's search on blog tree B, a seventh of its time).
+  Listed listed = list_in_cells(grid, two.small);
+  listed.index_runs();
+  constexpr std::size_t kChunk = 256;
+  std::vector<std::vector<Pair>> chunks((one.small.size() + kChunk - 1) /
+                                        kChunk);
+  tbb::parallel_for(std::size_t{0}, chunks.size(), [&](std::size_t chunk) {
+    std::vector<Pair>& out = chunks[chunk];
+    const std::size_t end = std::min(one.small.size(), (chunk + 1) * kChunk);
+    for (std::size_t k = chunk * kChunk; k < end; ++k) {
+      const Box& box = one.small[k];
+      const std::uint32_t i = one.small_id[k];
+      const std::size_t mine = out.size();
+      grid.for_each(
+          box.min, box.max, [&](std::uint64_t key, const glm::dvec3&) {
+            const auto [from, to] = listed.run(key);
+            for (std::size_t e = from; e < to; ++e) {
+              const std::uint32_t small = listed.entries[e].second;
+              const std::uint32_t j = two.small_id[small];
+              if (taken_in(grid, key, box, two.small[small]) && keep(i, j)) {
+                out.emplace_back(i, j);
+              }
+            }
+          });
+      // Cells 2²¹ apart share a key (CellGrid): a pair may come twice.
+      const auto from = out.begin() + static_cast<std::ptrdiff_t>(mine);
+      std::sort(from, out.end());
+      out.erase(std::unique(from, out.end()), out.end());
+    }
+  });
+  std::vector<Pair> pairs;
+  std::size_t total = 0;
+  for (const std::vector<Pair>& chunk : chunks) total += chunk.size();
+  pairs.reserve(total);
+  for (const std::vector<Pair>& chunk : chunks) {
+    pairs.insert(pairs.end(), chunk.begin(), chunk.end());
+  }
   // The large boxes of the first set against the whole second set, and the
   // large ones of the second against the small ones of the first, each in
   // a grid of their size.
@@ -309,7 +359,14 @@ std::vector<Pair> meeting_box_pairs(const std::vector<Box>& first,
       more.emplace_back(one.small_id[b], two.large_id[a]);
     }
   }
-  return gathered(found, std::move(more));
+  if (more.empty()) return pairs;
+  // No pair of the small boxes has a large box: the two lists share none.
+  std::sort(more.begin(), more.end());
+  more.erase(std::unique(more.begin(), more.end()), more.end());
+  const auto middle = static_cast<std::ptrdiff_t>(pairs.size());
+  pairs.insert(pairs.end(), more.begin(), more.end());
+  std::inplace_merge(pairs.begin(), pairs.begin() + middle, pairs.end());
+  return pairs;
 }
 
 }  // namespace lsolid

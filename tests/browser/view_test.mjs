@@ -123,7 +123,13 @@ test('builds the file again when it is saved', async () => {
 
 test('shows an error at its line with a caret and keeps the model', async () => {
   fs.writeFileSync(file, tree(3) + 'A → F[+A\n');
-  await page.waitForSelector('#error:not([hidden])', { timeout: 30000 });
+  // writeFileSync truncates the file, then writes it: the server builds a
+  // change once the file has stopped changing, but a loaded machine can
+  // still show the empty file's error first. The saved file's is awaited.
+  await page.waitForFunction(() => {
+    const error = document.querySelector('#error');
+    return !error.hidden && /tree\.ls:7:/.test(error.textContent);
+  }, null, { timeout: 30000 });
   const text = await page.textContent('#error');
   assert.match(text, /tree\.ls:7:\d+: error: /);
   assert.match(text, /\n\s*\^/);

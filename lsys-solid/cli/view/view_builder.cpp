@@ -36,6 +36,13 @@ namespace {
 struct Cancelled {};
 
 constexpr auto kWatchInterval = std::chrono::milliseconds(200);
+// A change is built once the file has kept its size and time this long:
+// a save that truncates the file and then writes it, caught between the
+// two, showed "no axiom" at 1:1 for the empty file before the real one (a
+// failure of the browser test on a loaded machine). At most kSettleRounds
+// waits, so a file that never stops changing is still built.
+constexpr auto kSettleInterval = std::chrono::milliseconds(60);
+constexpr int kSettleRounds = 20;
 // Progress is told at most this often, and at every change of stage.
 constexpr auto kProgressInterval = std::chrono::milliseconds(100);
 // The bed drawn without --bed: the Creality Ender 3's build volume, about
@@ -309,8 +316,19 @@ void ViewBuilder::watch() {
                                [&] { return stopping_.load(); });
     }
     if (stopping_) return;
-    const FileStamp now = stamp_of(path);
+    FileStamp now = stamp_of(path);
     if (now == last) continue;
+    for (int round = 0; round < kSettleRounds && !stopping_; ++round) {
+      {
+        std::unique_lock lock(mutex_);
+        wanted_changed_.wait_for(lock, kSettleInterval,
+                                 [&] { return stopping_.load(); });
+      }
+      const FileStamp again = stamp_of(path);
+      if (again == now) break;
+      now = again;
+    }
+    if (stopping_) return;
     last = now;
     if (!now.exists) {
       // A deleted file, or an editor's save by rename caught between the

@@ -141,6 +141,8 @@ struct Listed {
   }
 
   // The run of the cell `key`: [first, last) in entries, empty if none.
+  // @pre index_runs() was called (the search of one set walks the runs and
+  // needs no table).
   [[nodiscard]] std::pair<std::size_t, std::size_t> run(
       std::uint64_t key) const {
     const std::size_t mask = slot_key.size() - 1;
@@ -182,6 +184,27 @@ Listed list_in_cells(const CellGrid& grid, const std::vector<Box>& boxes) {
   return out;
 }
 
+// The cell of each box's lowest corner: a pair of boxes that meet is taken
+// in the cell of the lowest corner of what they share, whose coordinates
+// are the larger of the two boxes' lowest cells' (cells are monotone in x,
+// y, z).
+std::vector<glm::ivec3> lowest_cells(const CellGrid& grid,
+                                     const std::vector<Box>& boxes) {
+  std::vector<glm::ivec3> low(boxes.size());
+  tbb::parallel_for(std::size_t{0}, boxes.size(), [&](std::size_t i) {
+    low[i] = grid.cell_of(boxes[i].min);
+  });
+  return low;
+}
+
+// Whether boxes a and b, whose lowest cells are low_a and low_b, meet and
+// their pair is taken in cell `key`, which holds them both: each pair in
+// one cell alone.
+bool taken_in(std::uint64_t key, const Box& a, const glm::ivec3& low_a,
+              const Box& b, const glm::ivec3& low_b) {
+  return meet(a, b) && CellGrid::key(glm::max(low_a, low_b)) == key;
+}
+
 // The pairs the threads found and `more`, sorted, each once: cells 2²¹
 // apart share a key (CellGrid), so a pair may come twice.
 std::vector<Pair> gathered(Found& found, std::vector<Pair> more) {
@@ -206,13 +229,7 @@ std::vector<Pair> meeting_box_pairs(const std::vector<Box>& boxes,
   const Listed listed = list_in_cells(grid, small);
   const std::vector<Entry>& entries = listed.entries;
   const std::vector<std::size_t>& runs = listed.runs;
-  // The cell of each box's lowest corner: the pair of two boxes that meet
-  // is taken in the cell of the lowest corner of what they share, whose
-  // coordinates are the larger of theirs (cells are monotone in x, y, z).
-  std::vector<glm::ivec3> low_cell(small.size());
-  tbb::parallel_for(std::size_t{0}, small.size(), [&](std::size_t i) {
-    low_cell[i] = grid.cell_of(small[i].min);
-  });
+  const std::vector<glm::ivec3> low_cell = lowest_cells(grid, small);
   Found found;
   // A cell's boxes, copied side by side with their ids and lowest cells,
   // are swept along x, so that only those whose x ranges overlap are
@@ -245,8 +262,8 @@ std::vector<Pair> meeting_box_pairs(const std::vector<Box>& boxes,
             for (std::size_t b = a + 1; b < in_cell.size(); ++b) {
               const InCell& cell_b = in_cell[b];
               if (cell_b.box.min.x > cell_a.box.max.x) break;
-              if (!meet(cell_a.box, cell_b.box) ||
-                  CellGrid::key(glm::max(cell_a.low, cell_b.low)) != key) {
+              if (!taken_in(key, cell_a.box, cell_a.low, cell_b.box,
+                            cell_b.low)) {
                 continue;
               }
               const std::uint32_t i = std::min(cell_a.id, cell_b.id);
@@ -294,15 +311,9 @@ std::vector<Pair> meeting_box_pairs(const std::vector<Box>& first,
   // sorted on their own and the boxes taken in order, in fixed chunks, so
   // that the pairs come sorted without sorting them all (tens of millions
   // for the exact union's search on blog tree B, a seventh of its time).
-  // A pair of boxes that meet is taken in one cell: that of the lowest
-  // corner of what they share, whose coordinates are the larger of the two
-  // boxes' lowest cells' (cells are monotone in x, y, z).
   Listed listed = list_in_cells(grid, two.small);
   listed.index_runs();
-  std::vector<glm::ivec3> low_cell(two.small.size());
-  tbb::parallel_for(std::size_t{0}, two.small.size(), [&](std::size_t j) {
-    low_cell[j] = grid.cell_of(two.small[j].min);
-  });
+  const std::vector<glm::ivec3> low_cell = lowest_cells(grid, two.small);
   constexpr std::size_t kChunk = 256;
   std::vector<std::vector<Pair>> chunks((one.small.size() + kChunk - 1) /
                                         kChunk);
@@ -319,8 +330,7 @@ std::vector<Pair> meeting_box_pairs(const std::vector<Box>& first,
             const auto [from, to] = listed.run(key);
             for (std::size_t e = from; e < to; ++e) {
               const std::uint32_t small = listed.entries[e].second;
-              if (!meet(box, two.small[small]) ||
-                  CellGrid::key(glm::max(low, low_cell[small])) != key) {
+              if (!taken_in(key, box, low, two.small[small], low_cell[small])) {
                 continue;
               }
               const std::uint32_t j = two.small_id[small];

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <glm/common.hpp>
@@ -214,14 +215,31 @@ class SurfaceDistance {
     return glm::dot(d, d);
   }
 
+  // Puts triangle i, which answered a query from its cell, first among the
+  // recent ones. @pre i is not among them (they were asked first).
+  void answered(std::uint32_t i) {
+    std::copy_backward(recent_.begin(), recent_.end() - 1, recent_.end());
+    recent_.front() = i;
+  }
+
   // True when near(i) holds for a triangle i within `distance_mm` of `p`
   // (those are all it asks about). Queries come in runs of nearby points
-  // (samples on one triangle): the triangle that answered the last one
-  // mostly answers this one, so it is asked first.
+  // (samples on one triangle, which mostly lies across a few faces of this
+  // surface where a tube's sides meet): the triangles that answered the
+  // last few queries mostly answer this one, so they are asked first, the
+  // latest first. With the last one alone, a third of the decimation's
+  // queries of the bush at n = 7 went on to their cells, a dozen triangles
+  // each.
   template <typename Near>
   [[nodiscard]] bool any_near(const glm::dvec3& p, double distance_mm,
                               Near near) {
-    if (hint_ < mesh_.triangles.size() && near(hint_)) return true;
+    for (std::size_t k = 0; k < recent_.size() && recent_[k] != kNone; ++k) {
+      if (near(recent_[k])) {
+        std::rotate(recent_.begin(), recent_.begin() + k,
+                    recent_.begin() + k + 1);
+        return true;
+      }
+    }
     const glm::dvec3 lo = p - distance_mm;
     const glm::dvec3 hi = p + distance_mm;
     const CellGrid& grid = index_->grid;
@@ -233,7 +251,7 @@ class SurfaceDistance {
                                std::span<const std::uint32_t>(index_->large)}) {
         for (const std::uint32_t i : list) {
           if (near(i)) {
-            hint_ = i;
+            answered(i);
             return true;
           }
         }
@@ -247,7 +265,7 @@ class SurfaceDistance {
         if (seen_[i] == stamp_) continue;
         seen_[i] = stamp_;
         if (near(i)) {
-          hint_ = i;
+          answered(i);
           found = true;
           return;
         }
@@ -347,7 +365,10 @@ class SurfaceDistance {
   std::shared_ptr<const Index> index_;
   std::vector<std::uint32_t> seen_;
   std::uint32_t stamp_ = 0;
-  std::uint32_t hint_ = ~std::uint32_t{0};  ///< the last triangle that answered
+  static constexpr std::uint32_t kNone = ~std::uint32_t{0};
+  // The triangles that answered the last queries, the latest first; kNone
+  // past those.
+  std::array<std::uint32_t, 4> recent_ = {kNone, kNone, kNone, kNone};
 };
 
 }  // namespace lsolid

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -86,6 +87,39 @@ TEST(SurfaceDistance, AnswersAsAScanOfEveryTriangleDoes) {
   // The points were not all far from the surface, nor all near it.
   EXPECT_GT(near, 500);
   EXPECT_LT(near, 11000);
+}
+
+// Runs of nearby queries, as a decimation asks them: points that go back and
+// forth over the row of small triangles, each answered by one of the last
+// few triangles that answered or by a triangle of its cell.
+TEST(SurfaceDistance, AnswersRunsOfNearbyQueriesAsAScanDoes) {
+  const TriangleMesh mesh = mixed_surface();
+  SurfaceDistance surface(mesh);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> step(-0.25, 0.3);
+  std::uniform_real_distribution<double> off(-0.06, 0.06);
+  double x = -0.2;
+  int within = 0;
+  int covered = 0;
+  for (int i = 0; i < 3000; ++i) {
+    x = std::clamp(x + step(random), -0.3, 4.3);
+    const glm::dvec3 p(x, 0.04 + off(random), 1.5 + off(random));
+    for (const double r : {0.02, 0.06}) {
+      const bool truth = brute_distance(mesh, p) <= r;
+      within += truth ? 1 : 0;
+      EXPECT_EQ(surface.within(p, r), truth) << i << " " << r;
+      const glm::dvec3 b = p + glm::dvec3(0.03, off(random), 0);
+      const glm::dvec3 c = p + glm::dvec3(0, 0.03, off(random));
+      const bool all = brute_covers(mesh, p, b, c, r);
+      covered += all ? 1 : 0;
+      EXPECT_EQ(surface.covers(p, b, c, r), all) << i << " " << r;
+    }
+  }
+  // Both answers came often enough to matter.
+  EXPECT_GT(within, 600);
+  EXPECT_LT(within, 5400);
+  EXPECT_GT(covered, 100);
+  EXPECT_LT(covered, 5400);
 }
 
 TEST(SurfaceDistance, AQuerierSharingTheIndexAnswersTheSame) {

@@ -62,6 +62,26 @@ TriangleMesh mixed_surface() {
   return mesh;
 }
 
+// What the index answers and a scan of every triangle answers, for one
+// query of each kind.
+struct Answers {
+  int within = 0;   // points within r
+  int covered = 0;  // triangles abc covered at r
+};
+
+// Expects `surface` (of `mesh`) to answer within(a, r) and covers(a, b, c, r)
+// as a scan does; counts the answers that were true.
+void expect_as_scan(SurfaceDistance& surface, const TriangleMesh& mesh,
+                    const glm::dvec3& a, const glm::dvec3& b,
+                    const glm::dvec3& c, double r, Answers& answers) {
+  const bool within = brute_distance(mesh, a) <= r;
+  answers.within += within ? 1 : 0;
+  EXPECT_EQ(surface.within(a, r), within) << a.x << " " << r;
+  const bool covered = brute_covers(mesh, a, b, c, r);
+  answers.covered += covered ? 1 : 0;
+  EXPECT_EQ(surface.covers(a, b, c, r), covered) << a.x << " " << r;
+}
+
 TEST(SurfaceDistance, AnswersAsAScanOfEveryTriangleDoes) {
   const TriangleMesh mesh = mixed_surface();
   SurfaceDistance surface(mesh);
@@ -70,23 +90,20 @@ TEST(SurfaceDistance, AnswersAsAScanOfEveryTriangleDoes) {
   std::uniform_real_distribution<double> y(-1.5, 3.5);
   std::uniform_real_distribution<double> z(-1.5, 2.5);
   std::uniform_real_distribution<double> jitter(-0.08, 0.08);
-  int near = 0;
+  Answers answers;
   for (int i = 0; i < 4000; ++i) {
     const glm::dvec3 p(x(random), y(random), z(random));
-    const double truth = brute_distance(mesh, p);
-    EXPECT_DOUBLE_EQ(surface.distance(p, 100.0), std::min(truth, 100.0));
+    EXPECT_DOUBLE_EQ(surface.distance(p, 100.0),
+                     std::min(brute_distance(mesh, p), 100.0));
     for (const double r : {0.05, 0.3, 1.0}) {
-      EXPECT_EQ(surface.within(p, r), truth <= r) << i << " " << r;
       const glm::dvec3 b = p + glm::dvec3(jitter(random), jitter(random), 0);
       const glm::dvec3 c = p + glm::dvec3(0, jitter(random), jitter(random));
-      const bool covered = brute_covers(mesh, p, b, c, r);
-      near += covered ? 1 : 0;
-      EXPECT_EQ(surface.covers(p, b, c, r), covered) << i << " " << r;
+      expect_as_scan(surface, mesh, p, b, c, r, answers);
     }
   }
   // The points were not all far from the surface, nor all near it.
-  EXPECT_GT(near, 500);
-  EXPECT_LT(near, 11000);
+  EXPECT_GT(answers.covered, 500);
+  EXPECT_LT(answers.covered, 11000);
 }
 
 // Runs of nearby queries, as a decimation asks them: points that go back and
@@ -99,27 +116,21 @@ TEST(SurfaceDistance, AnswersRunsOfNearbyQueriesAsAScanDoes) {
   std::uniform_real_distribution<double> step(-0.25, 0.3);
   std::uniform_real_distribution<double> off(-0.06, 0.06);
   double x = -0.2;
-  int within = 0;
-  int covered = 0;
+  Answers answers;
   for (int i = 0; i < 3000; ++i) {
     x = std::clamp(x + step(random), -0.3, 4.3);
     const glm::dvec3 p(x, 0.04 + off(random), 1.5 + off(random));
     for (const double r : {0.02, 0.06}) {
-      const bool truth = brute_distance(mesh, p) <= r;
-      within += truth ? 1 : 0;
-      EXPECT_EQ(surface.within(p, r), truth) << i << " " << r;
       const glm::dvec3 b = p + glm::dvec3(0.03, off(random), 0);
       const glm::dvec3 c = p + glm::dvec3(0, 0.03, off(random));
-      const bool all = brute_covers(mesh, p, b, c, r);
-      covered += all ? 1 : 0;
-      EXPECT_EQ(surface.covers(p, b, c, r), all) << i << " " << r;
+      expect_as_scan(surface, mesh, p, b, c, r, answers);
     }
   }
   // Both answers came often enough to matter.
-  EXPECT_GT(within, 600);
-  EXPECT_LT(within, 5400);
-  EXPECT_GT(covered, 100);
-  EXPECT_LT(covered, 5400);
+  EXPECT_GT(answers.within, 600);
+  EXPECT_LT(answers.within, 5400);
+  EXPECT_GT(answers.covered, 100);
+  EXPECT_LT(answers.covered, 5400);
 }
 
 TEST(SurfaceDistance, AQuerierSharingTheIndexAnswersTheSame) {

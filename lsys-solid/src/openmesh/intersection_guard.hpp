@@ -53,11 +53,8 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
     grid_ = CellGrid(std::max(1e-6, 2.0 * median));
     cells_.clear();
     large_.clear();
-    seen_.assign(m.n_faces(), 0);
-    version_.assign(m.n_faces(), 0);
+    faces_.assign(m.n_faces(), FaceState{});
     changing_.assign(m.n_faces(), 0);
-    box_lo_.assign(m.n_faces(), glm::dvec3(0.0));
-    box_hi_.assign(m.n_faces(), glm::dvec3(0.0));
     corners_.assign(m.n_faces(), IndexedTriangle{});
     degenerate_.assign(m.n_faces(), 0);
     for (const auto f : m.faces()) insert(f);
@@ -72,7 +69,7 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
   /// Indexes the faces that moved; the entries of those it removed go stale.
   void postprocess_collapse(const CollapseInfo& ci) override {
     for (const auto f : {ci.fl, ci.fr}) {
-      if (f.is_valid()) ++version_[static_cast<std::size_t>(f.idx())];
+      if (f.is_valid()) ++faces_[static_cast<std::size_t>(f.idx())].version;
     }
     for (const auto f : Base::mesh().vf_range(ci.v1)) insert(f);
   }
@@ -128,14 +125,14 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
       for (const Entry& entry : cell) {
         const int index = entry.face;
         const auto i = static_cast<std::size_t>(index);
-        if (entry.version != version_[i]) continue;
+        FaceState& face = faces_[i];
+        if (entry.version != face.version) continue;
         cell[kept++] = entry;
-        if (seen_[i] == query_stamp_) continue;
-        seen_[i] = query_stamp_;
+        if (face.seen == query_stamp_) continue;
+        face.seen = query_stamp_;
         // The box kept since the face last changed rejects most
         // candidates without walking the mesh for their corners.
-        if (changing_[i] != collapse_stamp_ &&
-            overlap(lo, hi, box_lo_[i], box_hi_[i]) &&
+        if (overlap(lo, hi, face) && changing_[i] != collapse_stamp_ &&
             !m.status(typename MeshT::FaceHandle(index)).deleted()) {
           nearby_.push_back(index);
         }
@@ -162,7 +159,7 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
     for (const int index : nearby_) {
       const auto i = static_cast<std::size_t>(index);
       for (std::size_t k = 0; k < fresh_.size(); ++k) {
-        if (overlap(fresh_lo_[k], fresh_hi_[k], box_lo_[i], box_hi_[i]) &&
+        if (overlap(fresh_lo_[k], fresh_hi_[k], faces_[i]) &&
             (degenerate_[i] != 0 ||
              proper_triangles_intersect(fresh_[k], corners_[i]))) {
           return refuse();
@@ -197,12 +194,6 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
             glm::max(glm::max(t.points[0], t.points[1]), t.points[2])};
   }
 
-  static bool overlap(const glm::dvec3& a_lo, const glm::dvec3& a_hi,
-                      const glm::dvec3& b_lo, const glm::dvec3& b_hi) {
-    return a_lo.x <= b_hi.x && b_lo.x <= a_hi.x && a_lo.y <= b_hi.y &&
-           b_lo.y <= a_hi.y && a_lo.z <= b_hi.z && b_lo.z <= a_hi.z;
-  }
-
   // Visits the cells that the box overlaps and the list of faces too large
   // for cells; a box over more cells than are filled visits every cell.
   template <typename Visit>
@@ -221,11 +212,14 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
     const IndexedTriangle t = triangle(f);
     const auto [lo, hi] = box(t);
     const auto i = static_cast<std::size_t>(f.idx());
-    box_lo_[i] = lo;
-    box_hi_[i] = hi;
+    FaceState& face = faces_[i];
+    for (int k = 0; k < 3; ++k) {
+      face.lo[k] = std::nextafter(static_cast<float>(lo[k]), -HUGE_VALF);
+      face.hi[k] = std::nextafter(static_cast<float>(hi[k]), HUGE_VALF);
+    }
     corners_[i] = t;
     degenerate_[i] = is_degenerate(t) ? 1 : 0;
-    const Entry entry{f.idx(), ++version_[i]};
+    const Entry entry{f.idx(), ++face.version};
     const auto add = [&](Cell key) {
       std::vector<Entry>& cell = cells_.at(key);
       if (cell.empty() || cell.back() != entry) cell.push_back(entry);
@@ -333,11 +327,27 @@ class ModIntersectionGuardT : public OpenMesh::Decimater::ModBaseT<MeshT> {
   };
   Cells cells_;
   std::vector<Entry> large_;
-  std::vector<std::uint32_t> version_;   // per face: inserts so far
-  std::vector<std::uint32_t> seen_;      // per face: last query
+  // What a query reads of each face it meets in a cell, in one place
+  // (from five arrays, up to five cache misses a face: the cell walk is
+  // most of the guard's own time, and the guard a third of blog tree B's
+  // decimation). The box is kept in floats rounded outwards, so that it
+  // holds the true one: a box test then passes every face the exact tests
+  // need, and a few more, which they reject. The bush at n = 7 on one
+  // thread, decimation 9.25-9.45 s against 9.64-9.67 s, the same bytes.
+  struct alignas(32) FaceState {
+    glm::vec3 lo{0.0F};  // its box when inserted
+    glm::vec3 hi{0.0F};
+    std::uint32_t version = 0;  // inserts so far
+    std::uint32_t seen = 0;     // last query
+  };
+  // Whether box lo-hi meets the face's box.
+  static bool overlap(const glm::dvec3& lo, const glm::dvec3& hi,
+                      const FaceState& face) {
+    return lo.x <= face.hi.x && face.lo.x <= hi.x && lo.y <= face.hi.y &&
+           face.lo.y <= hi.y && lo.z <= face.hi.z && face.lo.z <= hi.z;
+  }
+  std::vector<FaceState> faces_;
   std::vector<std::uint32_t> changing_;  // per face: last collapse tested
-  std::vector<glm::dvec3> box_lo_;       // per face: its box when inserted
-  std::vector<glm::dvec3> box_hi_;
   // Per face: its corners when inserted, which stay while its version does
   // (a face's corners change only in a collapse at one of them, and
   // postprocess_collapse inserts it again). Read from the mesh, the

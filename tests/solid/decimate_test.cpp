@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <set>
 #include <tuple>
+#include <vector>
 
 #include "cgal/hausdorff.hpp"
 #include "lsolid/distance.hpp"
@@ -242,6 +243,29 @@ TEST(Decimate, StartsAgainAimingLowerWhenItOvershootsTheTolerance) {
   const Decimated first = decimate(bush, {.tolerance_mm = 0.05});
   EXPECT_EQ(first.stats.attempts, 1);
   EXPECT_TRUE(first.stats.within_tolerance);
+}
+
+// The caller's check runs on every result while its deviation is measured,
+// the mesh returned last; unmeasured, once on the result.
+TEST(Decimate, HandsEachResultToTheCheckAlongside) {
+  const TriangleMesh bush = bush_union(4);
+  std::vector<TriangleMesh> checked;
+  const auto keep = [&](const TriangleMesh& result) {
+    checked.push_back(result);
+  };
+  const Decimated d =
+      decimate(bush, {.tolerance_mm = 0.05, .aim = 3.0, .alongside = keep});
+  ASSERT_GT(d.stats.attempts, 1);
+  ASSERT_EQ(checked.size(), static_cast<std::size_t>(d.stats.attempts));
+  EXPECT_EQ(checked.back().vertices, d.mesh.vertices);
+  EXPECT_EQ(checked.back().triangles, d.mesh.triangles);
+  EXPECT_NE(checked.front().triangles, d.mesh.triangles);
+  checked.clear();
+  const TriangleMesh cube = fine_cube(4);
+  const Decimated unmeasured =
+      decimate(cube, {.measure_deviation = false, .alongside = keep});
+  ASSERT_EQ(checked.size(), 1u);
+  EXPECT_EQ(checked.front().triangles, unmeasured.mesh.triangles);
 }
 
 TEST(Decimate, MeasuresTheTrueDeviationWhenACapShrinksTheModel) {

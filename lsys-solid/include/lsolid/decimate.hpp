@@ -44,6 +44,13 @@ struct DecimateOptions {
   std::size_t halve_from_triangles = 100000;
   /// Told the fraction of the collapses done (an estimate), 0 to 1.
   std::function<void(double fraction)> progress;
+  /// Called with each decimated mesh (once a run: a run whose deviation
+  /// exceeds the tolerance is followed by another), while its deviation is
+  /// measured, on another of the build's threads: the caller's check of
+  /// the result, done where the measurement would leave a core idle. The
+  /// call for the mesh returned is the last; when decimation is refused
+  /// (Decimated::refused), no call was for the mesh returned.
+  std::function<void(const TriangleMesh& result)> alongside;
 };
 
 /// What decimation did.

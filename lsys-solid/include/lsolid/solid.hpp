@@ -77,9 +77,14 @@ struct StageSeconds {
   double parts = 0.0;     ///< scaling and meshing the parts
   double unite = 0.0;     ///< the boolean union
   double round = 0.0;     ///< rounding, repair, and a planar model's cut
-  double decimate = 0.0;  ///< decimation and measuring its deviation
-  double check = 0.0;     ///< validation of the mesh as it will be written
-  double volumes = 0.0;   ///< the volumes per colour (multi_material)
+  /// Decimation and measuring its deviation, with the check of its result,
+  /// which runs alongside the measurement.
+  double decimate = 0.0;
+  /// Validation of the mesh as it will be written: of a decimated mesh,
+  /// the seconds its check took alongside the measurement, and those of
+  /// the tests of the parts' witnesses after it.
+  double check = 0.0;
+  double volumes = 0.0;  ///< the volumes per colour (multi_material)
 };
 
 /// What was built.

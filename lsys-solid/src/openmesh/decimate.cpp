@@ -29,7 +29,6 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
-#include <future>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
@@ -1034,18 +1033,29 @@ Decimated decimate_once(const TriangleMesh& input,
     box.max = glm::max(box.max, other.max);
     const double limit_mm = 2.0 * glm::length(box.size()) + 1.0;
     // The two ways share nothing (each surface index has its own query
-    // state), so the second runs on another core; the maximum is the same
-    // whichever finishes first.
-    std::future<double> input_from_output =
-        std::async(std::launch::async, [&input, &out, &options, limit_mm] {
+    // state), nor with the caller's check of the result, so the three run
+    // as tasks on oneTBB's threads; the maximum is the same whichever
+    // finishes first. The check is serial (CGAL's self-intersection search
+    // and orientation tests): after the measurement it left a core idle for
+    // its whole length.
+    double input_from_output = 0.0;
+    double output_from_input = 0.0;
+    tbb::parallel_invoke(
+        [&] {
           SurfaceDistance output_surface(out.mesh, options.tolerance_mm);
-          return sampled_distance(input, output_surface, limit_mm,
-                                  triangle_set(out.mesh));
+          input_from_output = sampled_distance(input, output_surface, limit_mm,
+                                               triangle_set(out.mesh));
+        },
+        [&] {
+          output_from_input = sampled_distance(out.mesh, input_surface,
+                                               limit_mm, triangle_set(input));
+        },
+        [&] {
+          if (options.alongside) options.alongside(out.mesh);
         });
-    const double output_from_input = sampled_distance(
-        out.mesh, input_surface, limit_mm, triangle_set(input));
-    stats.max_deviation_mm =
-        std::max(input_from_output.get(), output_from_input);
+    stats.max_deviation_mm = std::max(input_from_output, output_from_input);
+  } else if (options.alongside) {
+    options.alongside(out.mesh);
   }
   return out;
 }

@@ -194,6 +194,30 @@ class SurfaceDistance {
     });
   }
 
+  /// True when two triangles that share an edge, among those that answered
+  /// the last queries, lie within `distance_mm` of every point of triangle
+  /// abc between them: abc is cut by the plane through their common edge
+  /// and their mean normal, and each side of it is covered by the triangle
+  /// on that side, by convexity as in covers (the corners of a side are
+  /// those of abc there and the points where its sides cross the plane).
+  /// That proves at once a piece of a triangle that lies across a crease of
+  /// this surface, which no one triangle covers. False says nothing.
+  [[nodiscard]] bool covers_in_two(const glm::dvec3& a, const glm::dvec3& b,
+                                   const glm::dvec3& c, double distance_mm) {
+    // The points where abc's sides cross the plane are rounded: the sides
+    // are held a billionth of the distance nearer, far beyond that.
+    const double near = distance_mm * (1.0 - 1e-9);
+    const std::array<glm::dvec3, 3> corners{a, b, c};
+    for (std::size_t x = 0; x < recent_.size() && recent_[x] != kNone; ++x) {
+      for (std::size_t y = x + 1; y < recent_.size() && recent_[y] != kNone;
+           ++y) {
+        if (covered_between(recent_[x], recent_[y], corners, near * near))
+          return true;
+      }
+    }
+    return false;
+  }
+
   /// True when some triangle lies within `distance_mm` of `p`.
   [[nodiscard]] bool within(const glm::dvec3& p, double distance_mm) {
     const double squared = distance_mm * distance_mm;
@@ -213,6 +237,61 @@ class SurfaceDistance {
                                   mesh_.vertices[t[2]]) -
         p;
     return glm::dot(d, d);
+  }
+
+  // Whether triangles i and j share an edge and each covers the side of
+  // triangle `t` that it lies on, within sqrt(squared) (covers_in_two).
+  [[nodiscard]] bool covered_between(std::uint32_t i, std::uint32_t j,
+                                     const std::array<glm::dvec3, 3>& t,
+                                     double squared) const {
+    const auto& ti = mesh_.triangles[i];
+    const auto& tj = mesh_.triangles[j];
+    // The corner of each that the other lacks; two shared corners.
+    int alone_i = -1;
+    int shared = 0;
+    for (int k = 0; k < 3; ++k) {
+      if (std::find(tj.begin(), tj.end(), ti[k]) != tj.end()) {
+        ++shared;
+      } else {
+        alone_i = k;
+      }
+    }
+    if (shared != 2) return false;
+    const glm::dvec3& p = mesh_.vertices[ti[(alone_i + 1) % 3]];
+    const glm::dvec3& q = mesh_.vertices[ti[(alone_i + 2) % 3]];
+    const glm::dvec3& r_i = mesh_.vertices[ti[alone_i]];
+    std::uint32_t alone_j = tj[0];
+    for (const std::uint32_t v : tj) {
+      if (std::find(ti.begin(), ti.end(), v) == ti.end()) alone_j = v;
+    }
+    const glm::dvec3& r_j = mesh_.vertices[alone_j];
+    // Any plane through pq would do; this one, between the two planes,
+    // leaves each triangle on its own side where the crease is not folded.
+    glm::dvec3 m =
+        glm::cross(q - p, index_->bounds[i].normal + index_->bounds[j].normal);
+    const double side_i = glm::dot(m, r_i - p);
+    const double side_j = glm::dot(m, r_j - p);
+    if (!(side_i > 0.0 && side_j < 0.0) && !(side_i < 0.0 && side_j > 0.0)) {
+      return false;
+    }
+    if (side_i < 0.0) m = -m;
+    std::array<double, 3> side{};
+    for (int k = 0; k < 3; ++k) side[k] = glm::dot(m, t[k] - p);
+    const auto near = [&](std::uint32_t f, const glm::dvec3& x) {
+      return squared_distance(f, x) <= squared;
+    };
+    for (int k = 0; k < 3; ++k) {
+      if (side[k] >= 0.0 && !near(i, t[k])) return false;
+      if (side[k] <= 0.0 && !near(j, t[k])) return false;
+      const int l = (k + 1) % 3;
+      if ((side[k] > 0.0 && side[l] < 0.0) ||
+          (side[k] < 0.0 && side[l] > 0.0)) {
+        const glm::dvec3 x =
+            t[k] + (t[l] - t[k]) * (side[k] / (side[k] - side[l]));
+        if (!near(i, x) || !near(j, x)) return false;
+      }
+    }
+    return true;
   }
 
   // Puts triangle i, which answered a query from its cell, first among the

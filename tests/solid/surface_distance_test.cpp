@@ -133,6 +133,45 @@ TEST(SurfaceDistance, AnswersRunsOfNearbyQueriesAsAScanDoes) {
   EXPECT_LT(answers.covered, 5400);
 }
 
+// Triangles across the edges of a box, each first met point by point as a
+// decimation meets them: covers_in_two proves some that no one triangle
+// covers, and every point of each that it proves lies within the distance
+// (a grid of 21 points a side, against a scan).
+TEST(SurfaceDistance, CoversInTwoOnlyWhatLiesWithinAcrossACrease) {
+  const TriangleMesh mesh = testing::box_mesh({0, 0, 0}, {3, 2, 1});
+  SurfaceDistance surface(mesh);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> along(0.2, 2.8);
+  std::uniform_real_distribution<double> spread(-0.3, 0.3);
+  std::uniform_real_distribution<double> off(-0.04, 0.04);
+  int proven = 0;
+  int beyond_one = 0;
+  for (int i = 0; i < 3000; ++i) {
+    // About the box's edge along x at y = 2, z = 1, bent over it.
+    const auto bent = [&](double x, double s) {
+      return s < 0.0 ? glm::dvec3(x, 2.0 + s, 1.0 + off(random))
+                     : glm::dvec3(x, 2.0 + off(random), 1.0 - s);
+    };
+    const double x = along(random);
+    const glm::dvec3 a = bent(x + spread(random), spread(random));
+    const glm::dvec3 b = bent(x + spread(random), spread(random));
+    const glm::dvec3 c = bent(x + spread(random), spread(random));
+    const double r = i % 2 == 0 ? 0.05 : 0.2;
+    for (const glm::dvec3& p : {a, b, c}) (void)surface.within(p, r);
+    if (!surface.covers_in_two(a, b, c, r)) continue;
+    ++proven;
+    beyond_one += brute_covers(mesh, a, b, c, r) ? 0 : 1;
+    for (int u = 0; u <= 20; ++u) {
+      for (int v = 0; u + v <= 20; ++v) {
+        const glm::dvec3 p = a + (b - a) * (u / 20.0) + (c - a) * (v / 20.0);
+        ASSERT_LE(brute_distance(mesh, p), r) << i << " " << u << " " << v;
+      }
+    }
+  }
+  EXPECT_GT(proven, 100);
+  EXPECT_GT(beyond_one, 50);
+}
+
 TEST(SurfaceDistance, AQuerierSharingTheIndexAnswersTheSame) {
   const TriangleMesh mesh = mixed_surface();
   SurfaceDistance surface(mesh);

@@ -501,7 +501,8 @@ class GuardedDecimater : public OpenMesh::Decimater::BaseDecimaterT<Mesh> {
   bool strays(SurfaceDistance& input, double tolerance_mm) {
     const auto covered = [&](const glm::dvec3& a, const glm::dvec3& b,
                              const glm::dvec3& c) {
-      return input.covers(a, b, c, tolerance_mm);
+      return input.covers(a, b, c, tolerance_mm) ||
+             input.covers_in_two(a, b, c, tolerance_mm);
     };
     const auto near = [&](const glm::dvec3& p) {
       return input.within(p, tolerance_mm);
@@ -722,7 +723,8 @@ double sampled_distance(const TriangleMesh& from, const SurfaceDistance& to,
     // points find a triangle that near at the first try.
     const auto covered = [&](const glm::dvec3& a, const glm::dvec3& b,
                              const glm::dvec3& c) {
-      return worst > 0.0 && near.covers(a, b, c, worst);
+      return worst > 0.0 && (near.covers(a, b, c, worst) ||
+                             near.covers_in_two(a, b, c, worst));
     };
     const auto measure = [&](const glm::dvec3& p) {
       if (!near.within(p, worst)) {

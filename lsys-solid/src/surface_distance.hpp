@@ -205,8 +205,10 @@ class SurfaceDistance {
   [[nodiscard]] bool covers_in_two(const glm::dvec3& a, const glm::dvec3& b,
                                    const glm::dvec3& c, double distance_mm) {
     // The points where abc's sides cross the plane are rounded: the sides
-    // are held a billionth of the distance nearer, far beyond that.
-    const double near = distance_mm * (1.0 - 1e-9);
+    // are held a billionth of the distance and a picometre nearer, far
+    // beyond that.
+    const double near = distance_mm * (1.0 - 1e-9) - 1e-9;
+    if (!(near > 0.0)) return false;
     const std::array<glm::dvec3, 3> corners{a, b, c};
     for (std::size_t x = 0; x < recent_.size() && recent_[x] != kNone; ++x) {
       for (std::size_t y = x + 1; y < recent_.size() && recent_[y] != kNone;
@@ -217,6 +219,10 @@ class SurfaceDistance {
     }
     return false;
   }
+
+  /// Forgets which triangles answered the last queries, so that what
+  /// covers_in_two proves next does not depend on them.
+  void forget_answers() { recent_.fill(kNone); }
 
   /// True when some triangle lies within `distance_mm` of `p`.
   [[nodiscard]] bool within(const glm::dvec3& p, double distance_mm) {
@@ -256,7 +262,12 @@ class SurfaceDistance {
         alone_i = k;
       }
     }
-    if (shared != 2) return false;
+    // Only two well-shaped triangles (their normals kept in their bounds):
+    // a sliver's closest point is ill conditioned.
+    const glm::dvec3& n_i = index_->bounds[i].normal;
+    const glm::dvec3& n_j = index_->bounds[j].normal;
+    if (shared != 2 || glm::dot(n_i, n_i) == 0.0 || glm::dot(n_j, n_j) == 0.0)
+      return false;
     const glm::dvec3& p = mesh_.vertices[ti[(alone_i + 1) % 3]];
     const glm::dvec3& q = mesh_.vertices[ti[(alone_i + 2) % 3]];
     const glm::dvec3& r_i = mesh_.vertices[ti[alone_i]];
@@ -267,8 +278,7 @@ class SurfaceDistance {
     const glm::dvec3& r_j = mesh_.vertices[alone_j];
     // Any plane through pq would do; this one, between the two planes,
     // leaves each triangle on its own side where the crease is not folded.
-    glm::dvec3 m =
-        glm::cross(q - p, index_->bounds[i].normal + index_->bounds[j].normal);
+    glm::dvec3 m = glm::cross(q - p, n_i + n_j);
     const double side_i = glm::dot(m, r_i - p);
     const double side_j = glm::dot(m, r_j - p);
     if (!(side_i > 0.0 && side_j < 0.0) && !(side_i < 0.0 && side_j > 0.0)) {
@@ -276,7 +286,10 @@ class SurfaceDistance {
     }
     if (side_i < 0.0) m = -m;
     std::array<double, 3> side{};
-    for (int k = 0; k < 3; ++k) side[k] = glm::dot(m, t[k] - p);
+    for (int k = 0; k < 3; ++k) {
+      side[k] = glm::dot(m, t[k] - p);
+      if (std::isnan(side[k])) return false;  // neither side holds it
+    }
     const auto near = [&](std::uint32_t f, const glm::dvec3& x) {
       return squared_distance(f, x) <= squared;
     };

@@ -268,6 +268,19 @@ TEST(Decimate, HandsEachResultToTheCheckAlongside) {
   EXPECT_EQ(checked.front().triangles, unmeasured.mesh.triangles);
 }
 
+// A check that throws stops the decimation with its own error: a geometric
+// error of the check's is not a mesh that cannot be decimated.
+TEST(Decimate, LetsTheErrorOfTheCheckAlongsideGoOn) {
+  const TriangleMesh cube = fine_cube(4);
+  const auto fails = [](const TriangleMesh&) {
+    throw GeometryError("the check failed");
+  };
+  EXPECT_THROW((void)decimate(cube, {.alongside = fails}), GeometryError);
+  EXPECT_THROW(
+      (void)decimate(cube, {.measure_deviation = false, .alongside = fails}),
+      GeometryError);
+}
+
 TEST(Decimate, MeasuresTheTrueDeviationWhenACapShrinksTheModel) {
   const TriangleMesh bush = union_of(
       lsys::testing::parse_file("printables/abop-1.25-bush.ls",

@@ -28,6 +28,7 @@
 #include <boost/container_hash/hash.hpp>
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <functional>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -717,6 +718,9 @@ double sampled_distance(const TriangleMesh& from, const SurfaceDistance& to,
     std::unique_ptr<SurfaceDistance>& querier = queriers.local();
     if (!querier) querier = std::make_unique<SurfaceDistance>(to.sharing());
     SurfaceDistance& near = *querier;
+    // What a chunk proves must not depend on the chunks its thread ran
+    // before it (covers_in_two tries the triangles that answered last).
+    near.forget_answers();
     double worst = 0.0;
     // Only a point farther than the worst so far can change it: a part of
     // a triangle within that of one triangle of `to` is skipped, and most
@@ -966,8 +970,22 @@ Start decimate_halves(const TriangleMesh& input,
 }
 
 // One decimation whose vetoes aim at `aim` times the tolerance.
+// Runs options.alongside on `result`, if set; its exception, if it throws
+// one, goes to `thrown` for decimate to rethrow as it stands (not taken for
+// a mesh that cannot be decimated).
+void run_alongside(const DecimateOptions& options, const TriangleMesh& result,
+                   std::exception_ptr& thrown) {
+  if (!options.alongside) return;
+  try {
+    options.alongside(result);
+  } catch (...) {
+    thrown = std::current_exception();
+  }
+}
+
 Decimated decimate_once(const TriangleMesh& input,
-                        const DecimateOptions& options, double aim) {
+                        const DecimateOptions& options, double aim,
+                        std::exception_ptr& alongside_thrown) {
   Decimated out;
   DecimateStats& stats = out.stats;
   stats.triangles_before = input.triangles.size();
@@ -1052,12 +1070,10 @@ Decimated decimate_once(const TriangleMesh& input,
           output_from_input = sampled_distance(out.mesh, input_surface,
                                                limit_mm, triangle_set(input));
         },
-        [&] {
-          if (options.alongside) options.alongside(out.mesh);
-        });
+        [&] { run_alongside(options, out.mesh, alongside_thrown); });
     stats.max_deviation_mm = std::max(input_from_output, output_from_input);
-  } else if (options.alongside) {
-    options.alongside(out.mesh);
+  } else {
+    run_alongside(options, out.mesh, alongside_thrown);
   }
   return out;
 }
@@ -1079,14 +1095,17 @@ Decimated decimate(const TriangleMesh& input, const DecimateOptions& options) {
     // A mesh OpenMesh cannot take (GeometryError), or an exact test that
     // CGAL refuses (its preconditions throw logic errors), leaves the mesh
     // as it was: the build then checks and writes it undecimated. Anything
-    // else, such as a progress callback's own exception, goes on.
+    // else, such as a progress callback's own exception or the caller's
+    // check's (`alongside`), goes on.
+    std::exception_ptr alongside_thrown;
     try {
-      out = decimate_once(input, options, aim);
+      out = decimate_once(input, options, aim, alongside_thrown);
     } catch (const GeometryError& e) {
       return Decimated{.mesh = input, .refused = e.what()};
     } catch (const std::logic_error& e) {
       return Decimated{.mesh = input, .refused = e.what()};
     }
+    if (alongside_thrown) std::rethrow_exception(alongside_thrown);
     out.stats.attempts = attempt;
     out.stats.tolerance_mm = options.tolerance_mm;
     const double deviation = out.stats.max_deviation_mm;

@@ -6,6 +6,7 @@
 
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -64,11 +65,12 @@ void print_report(const SolidReport& r, bool united) {
         r.cavities_filled, r.witnesses_checked);
     if (u.engine == UnionEngine::ExactCrossings) {
       fmt::print(
-          "union engine: exact, {} threads, {} unions, {} where parts touch "
+          "union engine: exact, {} threads, {} unions ({} with an operand "
+          "grown where faces touch), {} where parts touch "
           "and {} fallbacks left to the corefinement; {} crossings, {} faces "
           "cut; {} predicates on implicit points, {} ({:.2f}%) evaluated "
           "exactly\n",
-          u.threads, u.exact_unions, u.degenerate_unions, u.fallbacks,
+          u.threads, u.exact_unions, u.grown, u.degenerate_unions, u.fallbacks,
           u.crossings, u.cut_faces, u.predicates, u.filter_failures,
           u.predicates == 0 ? 0.0
                             : 100.0 * static_cast<double>(u.filter_failures) /
@@ -135,9 +137,14 @@ void print_report(const SolidReport& r, bool united) {
   fmt::print("triangles: {}\n", v.triangles);
   fmt::print("volume: {:.1f} mm³\n", v.volume_mm3);
   const glm::dvec3 size = v.bounds.size();
+  // A coordinate that rounds to zero prints as 0.00, not -0.00: the union's
+  // growth where faces touch (10⁻¹¹ mm) can leave the lowest point that far
+  // below the bed.
+  const auto shown = [](double mm) { return std::abs(mm) < 0.005 ? 0.0 : mm; };
   fmt::print(
       "size: {:.2f} x {:.2f} x {:.2f} mm, from ({:.2f}, {:.2f}, {:.2f})\n",
-      size.x, size.y, size.z, v.bounds.min.x, v.bounds.min.y, v.bounds.min.z);
+      size.x, size.y, size.z, shown(v.bounds.min.x), shown(v.bounds.min.y),
+      shown(v.bounds.min.z));
   if (united) {
     fmt::print(
         "rounding: {} pass{}, {} slivers removed, {} intersecting faces "

@@ -32,6 +32,7 @@ Json union_engine_json(const UnionStats& u) {
   return Json{{"engine", engine_name(u.engine)},
               {"threads", u.threads},
               {"exact_unions", u.exact_unions},
+              {"grown_unions", u.grown},
               {"degenerate_unions", u.degenerate_unions},
               {"degenerate_reason", u.degenerate_reason},
               {"fallbacks", u.fallbacks},

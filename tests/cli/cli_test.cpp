@@ -230,6 +230,13 @@ class Build : public ::testing::Test {
   std::filesystem::path dir_;
 };
 
+// The volume a build's report gives, as printed; empty if it gives none.
+std::string reported_volume(const std::string& out) {
+  static const std::regex volume(R"(\nvolume: ([\d.]+) mm³)");
+  std::smatch m;
+  return std::regex_search(out, m, volume) ? m[1].str() : std::string();
+}
+
 // An OFF of the vertices (each as `read` makes of the three numbers the
 // regex `vertex` matches in `points`) and triangles (the regex `face` in
 // `triangles`, whose groups are 0-based indices, turned by `flip`).
@@ -621,13 +628,15 @@ TEST_F(Build, UnitesWithTheEngineAskedAndSaysWhatItDid) {
       run_command(lsolid() + " bush.ls -n 3 --no-decimate -o e.off", dir_);
   ASSERT_EQ(exact.exit_code, 0) << exact.err;
   const std::regex line(
-      R"(\nunion engine: exact, \d+ threads, (\d+) unions, (\d+) where )"
+      R"(\nunion engine: exact, \d+ threads, (\d+) unions \((\d+) with an )"
+      R"(operand grown where faces touch\), (\d+) where )"
       R"(parts touch and 0 fallbacks left to the )"
       R"(corefinement; (\d+) crossings)");
   std::smatch m;
   ASSERT_TRUE(std::regex_search(exact.out, m, line)) << exact.out;
   EXPECT_GT(std::stoi(m[1]), 0);
-  EXPECT_GT(std::stoi(m[3]), 0);
+  EXPECT_EQ(std::stoi(m[2]), 0);
+  EXPECT_GT(std::stoi(m[4]), 0);
   const auto oracle = run_command(
       lsolid() + " bush.ls -n 3 --no-decimate --union-engine corefine -o c.off",
       dir_);
@@ -635,16 +644,13 @@ TEST_F(Build, UnitesWithTheEngineAskedAndSaysWhatItDid) {
   EXPECT_NE(oracle.out.find("\nunion engine: corefine (CGAL's corefinement)\n"),
             std::string::npos)
       << oracle.out;
-  const std::regex volume(R"(\nvolume: ([\d.]+) mm³)");
-  std::smatch ve;
-  std::smatch vc;
-  ASSERT_TRUE(std::regex_search(exact.out, ve, volume));
-  ASSERT_TRUE(std::regex_search(oracle.out, vc, volume));
-  EXPECT_EQ(ve[1], vc[1]);
+  ASSERT_FALSE(reported_volume(exact.out).empty()) << exact.out;
+  EXPECT_EQ(reported_volume(exact.out), reported_volume(oracle.out));
   const auto json = run_command(
       lsolid() + " bush.ls -n 3 --no-decimate --json -o j.off", dir_);
   EXPECT_NE(json.out.find(R"("union_engine":{)"), std::string::npos);
   EXPECT_NE(json.out.find(R"("engine":"exact")"), std::string::npos);
+  EXPECT_NE(json.out.find(R"("grown_unions":0)"), std::string::npos);
   const auto bad =
       run_command(lsolid() + " bush.ls --union-engine fast -o b.off", dir_);
   EXPECT_EQ(bad.exit_code, 2);
@@ -660,6 +666,17 @@ TEST_F(Build, FusesTubesThatTouch) {
   const auto built = run_command(lsolid() + " touch.ls --one-piece", dir_);
   EXPECT_EQ(built.exit_code, 0) << built.err;
   EXPECT_NE(built.out.find("1 shell, genus 0"), std::string::npos) << built.out;
+  // Their flats lie face on face: the exact engine grows one tube by a
+  // thousand units in the last place and unites them itself.
+  EXPECT_NE(built.out.find(" 1 unions (1 with an operand grown where faces "
+                           "touch), 0 where parts touch and 0 fallbacks"),
+            std::string::npos)
+      << built.out;
+  const auto oracle = run_command(
+      lsolid() + " touch.ls --union-engine corefine -o c.stl", dir_);
+  ASSERT_EQ(oracle.exit_code, 0) << oracle.err;
+  ASSERT_FALSE(reported_volume(built.out).empty()) << built.out;
+  EXPECT_EQ(reported_volume(built.out), reported_volume(oracle.out));
 }
 
 TEST_F(Build, LeavesOutSegmentsDrawnAgainAndSaysHowMany) {

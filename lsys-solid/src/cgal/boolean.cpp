@@ -27,6 +27,8 @@
 #include <cstdint>
 #include <functional>
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <limits>
 #include <optional>
 #include <set>
 #include <string>
@@ -38,6 +40,7 @@
 #include "lsolid/errors.hpp"
 #include "lsolid/rounding.hpp"
 #include "settled_rounding.hpp"
+#include "triangle_pair.hpp"
 
 namespace lsolid {
 namespace {
@@ -56,6 +59,22 @@ constexpr int kAttempts = 3;
 // 100 mm is 6·10⁻⁶ mm), large enough to be a million steps of a double
 // there, so the coincidence is gone for sure.
 constexpr double kExactShiftMm = 1e-8;
+// How far the exact engine grows an operand whose faces touch the other's,
+// in units in the last place of its largest coordinate (at least this and
+// less than twice as far): 1.5·10⁻¹¹ to 3·10⁻¹¹ mm at 100 mm, a thousand steps
+// of a double, so the faces that touched overlap for sure, while the volume
+// changes by less than 10⁻⁹ of a tube's (its surface times the distance).
+constexpr double kGrowthUlps = 1024.0;
+// A vertex is moved along a direction that leaves each of its faces at
+// least this much (the cosine of about 84°), and the whole grown region
+// along kShift by kGrowthShift of the distance: so every face moves
+// outward, off the plane it touched, and no vertex stays on a plane of the
+// other operand's (a tube's ring, moved outward, stays in the plane of the
+// neighbour's end cap at that ring; the shift moves it off).
+constexpr double kGrowthMinCosine = 0.1;
+constexpr double kGrowthShift = 0.05;
+// Rounds of putting back the corners of faces that a growth made meet.
+constexpr int kGrowthRounds = 8;
 constexpr double kMendVolumeSlack = 1e-6;
 
 CGAL::Bbox_3 box_of(const Box& b) {
@@ -72,6 +91,9 @@ struct Group {
   std::optional<ExactMesh> exact;
   CGAL::Bbox_3 box;
   std::vector<std::size_t> parts;
+  // Holds the steps a growth left where faces touched (grown_mesh): what
+  // grows next had better be another operand.
+  bool grown = false;
 
   std::size_t faces() const {
     return exact ? exact->number_of_faces() : plain.triangles.size();
@@ -91,6 +113,7 @@ struct Group {
     }
     box += other.box;
     parts.insert(parts.end(), other.parts.begin(), other.parts.end());
+    grown = grown || other.grown;
   }
 };
 
@@ -252,6 +275,133 @@ TriangleMesh shifted_mesh(TriangleMesh mesh, double distance_mm) {
   return mesh;
 }
 
+// The mesh grown by about `distance_mm` where its faces meet `near` (the
+// other operand's box): each of their corners moved along a direction that
+// leaves every face around it (kGrowthMinCosine), so that the faces move
+// outward, off any face of the other operand they lay on, and all of them along
+// kShift by kGrowthShift of the distance. The direction starts as the mean
+// of the faces' unit normals weighted by their angle at the vertex (the
+// pseudo-normal), then is turned towards the face it leaves least, a few
+// times (a perceptron's steps), where a crease of a union makes the mean lean
+// too far one way; a vertex for which that finds no direction (a saddle whose
+// faces face every way) is only shifted, and a face touching the other
+// operand there may still touch it (the union then says so again). Nothing
+// if the grown mesh intersects itself: features closer than the distance,
+// such as the steps an earlier growth left.
+std::optional<TriangleMesh> grown_mesh(TriangleMesh mesh, double distance_mm,
+                                       const CGAL::Bbox_3& near) {
+  constexpr int kTurns = 16;
+  const glm::dvec3 shift =
+      distance_mm * kGrowthShift *
+      glm::normalize(glm::dvec3(kShift[0], kShift[1], kShift[2]));
+  const std::size_t nv = mesh.vertices.size();
+  const std::vector<glm::dvec3> original = mesh.vertices;
+  std::vector<char> moves(nv, 0);
+  for (const auto& t : mesh.triangles) {
+    CGAL::Bbox_3 box;
+    for (const std::uint32_t v : t) {
+      const glm::dvec3& p = mesh.vertices[v];
+      box += CGAL::Bbox_3(p.x, p.y, p.z, p.x, p.y, p.z);
+    }
+    if (!CGAL::do_overlap(box, near)) continue;
+    for (const std::uint32_t v : t) moves[v] = 1;
+  }
+  std::vector<glm::dvec3> unit_normal(mesh.triangles.size(), glm::dvec3(0.0));
+  std::vector<glm::dvec3> direction(nv, glm::dvec3(0.0));
+  std::vector<std::uint32_t> first(nv + 1, 0);  // faces around each vertex
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    const auto& t = mesh.triangles[f];
+    if (!moves[t[0]] && !moves[t[1]] && !moves[t[2]]) continue;
+    const glm::dvec3 n = glm::cross(mesh.vertices[t[1]] - mesh.vertices[t[0]],
+                                    mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+    const double length = glm::length(n);
+    if (!(length > 0.0)) continue;  // too small for doubles: no constraint
+    unit_normal[f] = n / length;
+    for (int i = 0; i < 3; ++i) {
+      const glm::dvec3& p = mesh.vertices[t[i]];
+      const glm::dvec3 e0 = mesh.vertices[t[(i + 1) % 3]] - p;
+      const glm::dvec3 e1 = mesh.vertices[t[(i + 2) % 3]] - p;
+      const double angle =
+          std::atan2(glm::length(glm::cross(e0, e1)), glm::dot(e0, e1));
+      direction[t[i]] += angle * unit_normal[f];
+      ++first[t[i] + 1];
+    }
+  }
+  for (std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
+  std::vector<std::uint32_t> around(first[nv]);
+  {
+    std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+      if (unit_normal[f] == glm::dvec3(0.0)) continue;
+      for (const std::uint32_t v : mesh.triangles[f])
+        around[next[v]++] = static_cast<std::uint32_t>(f);
+    }
+  }
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (!moves[v]) continue;
+    glm::dvec3 d = direction[v];
+    bool leaves_all = false;
+    for (int turn = 0; turn <= kTurns && !leaves_all; ++turn) {
+      const double length = glm::length(d);
+      if (!(length > 0.0)) break;
+      d /= length;
+      double least = 2.0;
+      glm::dvec3 worst(0.0);
+      for (std::uint32_t k = first[v]; k < first[v + 1]; ++k) {
+        const double c = glm::dot(d, unit_normal[around[k]]);
+        if (c < least) {
+          least = c;
+          worst = unit_normal[around[k]];
+        }
+      }
+      leaves_all = least >= kGrowthMinCosine;
+      if (!leaves_all) d += (2.0 * kGrowthMinCosine - least) * worst;
+    }
+    mesh.vertices[v] += leaves_all ? distance_mm * d + shift : shift;
+  }
+  // Only faces with a moved corner can have come to meet another. Where
+  // some did (the steps an earlier growth left, finer than this one), their
+  // corners go back where they were, until none meet: at worst the mesh as
+  // it was.
+  for (int round = 0; round < kGrowthRounds; ++round) {
+    std::vector<IndexedTriangle> triangles(mesh.triangles.size());
+    std::vector<char> settled(mesh.triangles.size(), 1);
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+      const auto& t = mesh.triangles[f];
+      triangles[f].ids = t;
+      for (int i = 0; i < 3; ++i) {
+        triangles[f].points[i] = mesh.vertices[t[i]];
+        if (moves[t[i]]) settled[f] = 0;
+      }
+    }
+    const std::vector<std::pair<std::uint32_t, std::uint32_t>> meeting =
+        intersecting_pairs(triangles, settled);
+    if (meeting.empty()) return mesh;
+    for (const auto& [f, g] : meeting) {
+      for (const std::uint32_t face : {f, g}) {
+        for (const std::uint32_t v : mesh.triangles[face]) {
+          if (!moves[v]) continue;
+          moves[v] = 0;
+          mesh.vertices[v] = original[v];
+        }
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+// kGrowthUlps units in the last place of the mesh's largest coordinate.
+double growth_unit_mm(const TriangleMesh& mesh) {
+  double largest = 0.0;
+  for (const glm::dvec3& p : mesh.vertices) {
+    largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  }
+  const double ulp =
+      std::nextafter(largest, std::numeric_limits<double>::infinity()) -
+      largest;
+  return kGrowthUlps * ulp;
+}
+
 void translate(ExactMesh& mesh, const Exact::Vector_3& by) {
   for (const auto v : mesh.vertices()) mesh.point(v) = mesh.point(v) + by;
 }
@@ -403,6 +553,8 @@ class Unioner {
     stats_.cut_faces += u.counters.cut_faces;
     degenerate_ = u.degenerate;
     transversal_ = u.transversal;
+    alike_ = u.alike;
+    face_on_face_ = u.face_on_face;
     unrounded_ = false;
     if (!u.failure.empty()) {
       last_failure_ = u.failure;
@@ -436,16 +588,55 @@ class Unioner {
       // parts that touch at a point. New points that could not be rounded to
       // doubles are shifted, too: they then fall elsewhere (ABOP fig. 1.26's
       // leaf plates at n = 3 rounded at the second shift). Faces that touch
-      // go to the corefinement, which handles them exactly (a shift could
-      // part them), as does a shift that does not help; it costs minutes on
-      // a large operand (ternary fig. 2.8b: one such union, 50 s of 61).
+      // are made to overlap by a growth (below). Coplanar faces that face
+      // the same way go to the corefinement, which handles them exactly, as
+      // does a shift or growth that does not help; it costs minutes on a
+      // large operand (ternary fig. 2.8b: one such union, 50 s of 61).
       Group& moved = b.faces() <= a.faces() ? b : a;
-      const Group& fixed = &moved == &b ? a : b;
       std::optional<TriangleMesh> u = exact_union(a, b, round_points);
       const bool degenerate = degenerate_;
       const std::string failure = last_failure_;
+      // Faces that touch face on (tubes side by side in a space-filling
+      // curve as wide as its spacing, a leaf lying on a leaf) are made to
+      // overlap: one operand grows by a thousand units in the last place
+      // (grown_mesh), so that its faces that lay on the other's cross into
+      // it, and the solids are joined there as the exact union of the faces
+      // that touch joins them, within 3·10⁻¹¹ mm. Not where solids touch
+      // only at an edge or a point from outside (a growth would join them
+      // by a neck that thin; the corefinement's shift parts or joins them),
+      // and not where coplanar faces face the same way (cubes side by side,
+      // their tops in one plane): a growth leaves a step that high between
+      // them, a sliver along their whole outline that rounding to the
+      // output's floats could not mend on Lparser's Menger cube (it rebuilt
+      // 23,802 faces and lost parts). The operand grown is one without an
+      // earlier growth's steps if one is, else the smaller; the other if
+      // that one cannot grow.
+      std::optional<Group> grown;
+      if (!u && degenerate_ && !transversal_ && face_on_face_ && !alike_) {
+        Group* order[2] = {&moved, &moved == &b ? &a : &b};
+        if (order[0]->grown && !order[1]->grown) std::swap(order[0], order[1]);
+        const double golden_step = kGolden * static_cast<double>(growths_++);
+        for (Group* candidate : order) {
+          const Group& other = candidate == &a ? b : a;
+          const double distance_mm =
+              growth_unit_mm(candidate->plain) *
+              (1.0 + golden_step - std::floor(golden_step));
+          std::optional<TriangleMesh> g =
+              grown_mesh(candidate->plain, distance_mm, other.box);
+          if (!g) continue;
+          grown = Group{std::move(*g), {}, {}, {}};
+          u = exact_union(other, *grown, round_points);
+          if (u) {
+            ++stats_.grown;
+            candidate->box += box_of(bounds(grown->plain));
+          }
+          break;
+        }
+      }
+      // A shift would undo a growth, a thousand times smaller than it: a
+      // grown union that fails goes to the corefinement.
       for (int attempt = 1;
-           !u && (transversal_ || unrounded_) && attempt < kAttempts;
+           !u && !grown && (transversal_ || unrounded_) && attempt < kAttempts;
            ++attempt) {
         // Each shift of the build its own distance: a part shifted once,
         // met again by its twin shifted by as much, would coincide again
@@ -453,6 +644,7 @@ class Unioner {
         const double golden_step = kGolden * static_cast<double>(shifts_++);
         const double distance_mm =
             kExactShiftMm * (1.0 + golden_step - std::floor(golden_step));
+        const Group& fixed = &moved == &b ? a : b;
         const Group shifted{shifted_mesh(moved.plain, distance_mm), {}, {}, {}};
         u = exact_union(fixed, shifted, round_points);
         if (u) {
@@ -463,6 +655,7 @@ class Unioner {
       if (u) {
         ++stats_.booleans;
         ++stats_.exact_unions;
+        a.grown = a.grown || b.grown || grown.has_value();
         a.plain = std::move(*u);
         a.box += b.box;
         a.parts.insert(a.parts.end(), b.parts.begin(), b.parts.end());
@@ -633,11 +826,14 @@ class Unioner {
   UnionEngine engine_;
   UnionStats stats_;
   exact_union::FilterCounters filters_;
-  std::string last_failure_;  // what CGAL said, if it threw
-  bool degenerate_ = false;   // the exact engine's last failure
-  bool transversal_ = false;  // and whether a shift removes it
-  bool unrounded_ = false;    // its new points could not be rounded
-  std::size_t shifts_ = 0;    // the exact engine's shifts so far
+  std::string last_failure_;   // what CGAL said, if it threw
+  bool degenerate_ = false;    // the exact engine's last failure
+  bool transversal_ = false;   // and whether a shift removes it
+  bool alike_ = false;         // or coplanar faces that face the same way
+  bool face_on_face_ = false;  // and whether any lie face on face
+  bool unrounded_ = false;     // its new points could not be rounded
+  std::size_t shifts_ = 0;     // the exact engine's shifts so far
+  std::size_t growths_ = 0;    // and its operands grown
 };
 
 }  // namespace

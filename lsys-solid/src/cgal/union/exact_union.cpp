@@ -64,7 +64,60 @@ struct Failure {
   // on both sides of the other's): a shift takes the coincidence away and
   // leaves any crossing of the faces, unlike one of faces that touch.
   bool transversal = false;
+  // Among faces that touch, coplanar faces that face the same way.
+  bool alike = false;
+  // Among faces that touch, coplanar faces that face each other and
+  // overlap in more than an edge or a point, or a face on the inner side of
+  // the other's plane.
+  bool face_on_face = false;
 };
+
+// Orientations of points of one plane, in the projection along the largest
+// coordinate of its normal `n`, which keeps every orientation there.
+struct PlaneOrientation {
+  explicit PlaneOrientation(const glm::dvec3& n) {
+    const glm::dvec3 an = glm::abs(n);
+    const int axis = an.x >= an.y && an.x >= an.z ? 0 : (an.y >= an.z ? 1 : 2);
+    u = (axis + 1) % 3;
+    v = (axis + 2) % 3;
+  }
+  CGAL::Orientation operator()(const glm::dvec3& p, const glm::dvec3& q,
+                               const glm::dvec3& r) const {
+    return CGAL::orientation(K::Point_2(p[u], p[v]), K::Point_2(q[u], q[v]),
+                             K::Point_2(r[u], r[v]));
+  }
+  // Whether p lies inside the triangle t, not on its boundary.
+  bool strictly_inside(const glm::dvec3& p,
+                       const std::array<glm::dvec3, 3>& t) const {
+    const CGAL::Orientation o = (*this)(t[0], t[1], t[2]);
+    if (o == CGAL::COLLINEAR) return false;
+    for (int i = 0; i < 3; ++i)
+      if ((*this)(t[i], t[(i + 1) % 3], p) != o) return false;
+    return true;
+  }
+  int u = 0;
+  int v = 1;
+};
+
+// Whether two coplanar triangles overlap in more than an edge or a point:
+// no edge of either leaves the other on its outer side or on its line
+// (separating axes).
+bool overlap_in_area(const std::array<std::array<glm::dvec3, 3>, 2>& corner,
+                     const PlaneOrientation& orient) {
+  for (int m = 0; m < 2; ++m) {
+    const auto& t = corner[m];
+    const CGAL::Orientation o = orient(t[0], t[1], t[2]);
+    if (o == CGAL::COLLINEAR) return false;
+    for (int i = 0; i < 3; ++i) {
+      bool separates = true;
+      for (const glm::dvec3& p : corner[1 - m]) {
+        if (orient(t[i], t[(i + 1) % 3], p) == o) separates = false;
+      }
+      if (separates) return false;
+    }
+  }
+  return true;
+}
 
 // Runs body(begin, end, chunk) over [0, n) in chunks of fixed size on
 // oneTBB's threads, and rethrows the failure of the first chunk that failed:
@@ -156,7 +209,47 @@ std::optional<Segment> cross_faces(const std::array<Operand, 2>& ops,
       const K::Triangle_3 tb(point3(corner[1][0]), point3(corner[1][1]),
                              point3(corner[1][2]));
       if (!CGAL::do_intersect(ta, tb)) return std::nullopt;
-      throw Failure{"faces touch", true};
+      const auto flat = [&](int m) {
+        return side[m][0] == CGAL::ZERO && side[m][1] == CGAL::ZERO &&
+               side[m][2] == CGAL::ZERO;
+      };
+      // Coplanar faces that face the same way (a strategy's choice, so the
+      // normals' directions in doubles do: exactly coplanar faces have
+      // parallel normals).
+      const bool coplanar = flat(0) && flat(1);
+      const glm::dvec3 na =
+          glm::cross(corner[0][1] - corner[0][0], corner[0][2] - corner[0][0]);
+      const glm::dvec3 nb =
+          glm::cross(corner[1][1] - corner[1][0], corner[1][2] - corner[1][0]);
+      const bool alike = coplanar && glm::dot(na, nb) > 0.0;
+      Failure touch{alike ? "coplanar faces overlap" : "faces touch", true,
+                    false, alike};
+      // Or one face lies on the inner side of the other's plane with a
+      // corner inside the other face: the solids overlap there already (a
+      // face that an earlier growth tilted into the other solid). On the
+      // inner side of a plane alone is not inside the solid: a tube's side
+      // meets the plane of a box's side there, end to end with the box's
+      // edge, at the box's corner only.
+      const auto dips = [&](int m) {
+        bool neg = false;
+        for (const Sign s : side[m]) {
+          if (s == CGAL::POSITIVE) return false;
+          neg = neg || s == CGAL::NEGATIVE;
+        }
+        if (!neg) return false;
+        const PlaneOrientation orient(m == 0 ? nb : na);
+        for (int i = 0; i < 3; ++i) {
+          if (side[m][i] == CGAL::ZERO &&
+              orient.strictly_inside(corner[m][i], corner[1 - m])) {
+            return true;
+          }
+        }
+        return false;
+      };
+      touch.face_on_face = (coplanar && !alike &&
+                            overlap_in_area(corner, PlaneOrientation(na))) ||
+                           dips(0) || dips(1);
+      throw touch;
     }
     throw Failure{"a vertex lies on a face's plane", true, true};
   }
@@ -490,6 +583,8 @@ class Engine {
       result.failure = f.what;
       result.degenerate = f.degenerate;
       result.transversal = f.transversal;
+      result.alike = f.alike;
+      result.face_on_face = f.face_on_face;
     } catch (const CGAL::Failure_exception& e) {
       // A violated precondition of CGAL's (on as exceptions): a bug here.
       result.failure = std::string("CGAL: ") + e.what();
@@ -542,21 +637,42 @@ class Engine {
     // A transversal degeneracy does not stop the search: if faces also
     // touch somewhere, that is the failure to report, since a shift could
     // part them.
+    // Nor do faces that touch: the search goes on to learn whether any
+    // coplanar faces that face the same way are among them (PairUnion::alike).
     std::vector<std::optional<Failure>> transversal(chunks);
-    for_each_chunk(pairs.size(),
-                   [&](std::size_t begin, std::size_t end, std::size_t chunk) {
-                     for (std::size_t i = begin; i < end; ++i) {
-                       try {
-                         if (std::optional<Segment> s = cross_faces(
-                                 ops_, pairs[i].first, pairs[i].second)) {
-                           found[chunk].push_back(*s);
-                         }
-                       } catch (const Failure& f) {
-                         if (!f.transversal) throw;
-                         if (!transversal[chunk]) transversal[chunk] = f;
-                       }
-                     }
-                   });
+    std::vector<std::optional<Failure>> touching(chunks);
+    for_each_chunk(pairs.size(), [&](std::size_t begin, std::size_t end,
+                                     std::size_t chunk) {
+      for (std::size_t i = begin; i < end; ++i) {
+        try {
+          if (std::optional<Segment> s =
+                  cross_faces(ops_, pairs[i].first, pairs[i].second)) {
+            found[chunk].push_back(*s);
+          }
+        } catch (const Failure& f) {
+          if (!f.degenerate) throw;
+          std::optional<Failure>& first =
+              f.transversal ? transversal[chunk] : touching[chunk];
+          if (!first) {
+            first = f;
+          } else {
+            first->alike = first->alike || f.alike;
+            first->face_on_face = first->face_on_face || f.face_on_face;
+          }
+        }
+      }
+    });
+    std::optional<Failure> touch;
+    for (const std::optional<Failure>& f : touching) {
+      if (!f) continue;
+      if (!touch) {
+        touch = f;
+      } else {
+        touch->alike = touch->alike || f->alike;
+        touch->face_on_face = touch->face_on_face || f->face_on_face;
+      }
+    }
+    if (touch) throw *touch;
     for (const std::optional<Failure>& f : transversal)
       if (f) throw *f;
     for (const std::vector<Segment>& list : found)

@@ -45,6 +45,17 @@ struct PairUnion {
   /// where faces touch: a shift removes it and keeps faces that cross
   /// crossing.
   bool transversal = false;
+  /// Among the faces that touch, coplanar faces that face the same way
+  /// (cubes side by side with their tops in one plane): growing an operand
+  /// would leave a step as high as the growth between them.
+  bool alike = false;
+  /// Among the faces that touch, coplanar faces that face each other and
+  /// overlap in more than an edge or a point, or a face on the inner side
+  /// of the other's plane that meets it at an edge or a corner: solids that
+  /// lie face on face or overlap there, which a growth joins. Solids that
+  /// touch only at an edge or a point from outside the corefinement's
+  /// shift parts or joins.
+  bool face_on_face = false;
   std::string failure;
   PairCounters counters;
 };

@@ -284,10 +284,13 @@ TriangleMesh shifted_mesh(TriangleMesh mesh, double distance_mm) {
 // pseudo-normal), then is turned towards the face it leaves least, a few
 // times (a perceptron's steps), where a crease of a union makes the mean lean
 // too far one way; a vertex for which that finds no direction (a saddle whose
-// faces face every way) is only shifted, and a face touching the other
-// operand there may still touch it (the union then says so again). Nothing
-// if the grown mesh intersects itself: features closer than the distance,
-// such as the steps an earlier growth left.
+// faces face every way) is only shifted: a face touching the other operand
+// with such corners alone may still touch it (the union then says so again)
+// or leave it by 10⁻¹³ mm, which the union's checks and rounding then see
+// (kept in place instead, such corners left the touching Hilbert curve's
+// largest union to the corefinement). Nothing if the grown mesh intersects
+// itself: features closer than the distance, such as the steps an earlier
+// growth left.
 std::optional<TriangleMesh> grown_mesh(TriangleMesh mesh, double distance_mm,
                                        const CGAL::Bbox_3& near) {
   constexpr int kTurns = 16;
@@ -363,7 +366,7 @@ std::optional<TriangleMesh> grown_mesh(TriangleMesh mesh, double distance_mm,
   // some did (the steps an earlier growth left, finer than this one), their
   // corners go back where they were, until none meet: at worst the mesh as
   // it was.
-  for (int round = 0; round < kGrowthRounds; ++round) {
+  for (int round = 0;; ++round) {
     std::vector<IndexedTriangle> triangles(mesh.triangles.size());
     std::vector<char> settled(mesh.triangles.size(), 1);
     for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
@@ -377,6 +380,7 @@ std::optional<TriangleMesh> grown_mesh(TriangleMesh mesh, double distance_mm,
     const std::vector<std::pair<std::uint32_t, std::uint32_t>> meeting =
         intersecting_pairs(triangles, settled);
     if (meeting.empty()) return mesh;
+    if (round == kGrowthRounds) return std::nullopt;
     for (const auto& [f, g] : meeting) {
       for (const std::uint32_t face : {f, g}) {
         for (const std::uint32_t v : mesh.triangles[face]) {
@@ -387,7 +391,6 @@ std::optional<TriangleMesh> grown_mesh(TriangleMesh mesh, double distance_mm,
       }
     }
   }
-  return std::nullopt;
 }
 
 // kGrowthUlps units in the last place of the mesh's largest coordinate.
@@ -671,7 +674,7 @@ class Unioner {
         reason = "the union of " + describe(a) + " with " + describe(b) + ": " +
                  failure;
         if (failure != last_failure_) {
-          reason += " (shifted: ";
+          reason += grown ? " (grown: " : " (shifted: ";
           reason += last_failure_;
           reason += ")";
         }
@@ -717,6 +720,7 @@ class Unioner {
       ++stats_.booleans;
       a.box += b.box;
       a.parts.insert(a.parts.end(), b.parts.begin(), b.parts.end());
+      a.grown = a.grown || b.grown;
       if (in_doubles && engine_ == UnionEngine::ExactCrossings) {
         // Back to the exact engine for the unions after this one: kept
         // exact, every later union that took in these parts went to the

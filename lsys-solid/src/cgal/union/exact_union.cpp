@@ -213,15 +213,25 @@ std::optional<Segment> cross_faces(const std::array<Operand, 2>& ops,
         return side[m][0] == CGAL::ZERO && side[m][1] == CGAL::ZERO &&
                side[m][2] == CGAL::ZERO;
       };
-      // Coplanar faces that face the same way (a strategy's choice, so the
-      // normals' directions in doubles do: exactly coplanar faces have
-      // parallel normals).
+      // Coplanar faces that face the same way.
       const bool coplanar = flat(0) && flat(1);
       const glm::dvec3 na =
           glm::cross(corner[0][1] - corner[0][0], corner[0][2] - corner[0][0]);
       const glm::dvec3 nb =
           glm::cross(corner[1][1] - corner[1][0], corner[1][2] - corner[1][0]);
-      const bool alike = coplanar && glm::dot(na, nb) > 0.0;
+      // Facing the same way: the two triangles turn the same way in one
+      // projection of their plane (exact; the normals' directions in
+      // doubles decide only for a triangle that projects to a line).
+      const bool alike = coplanar && [&] {
+        const PlaneOrientation orient(na);
+        const CGAL::Orientation oa =
+            orient(corner[0][0], corner[0][1], corner[0][2]);
+        const CGAL::Orientation ob =
+            orient(corner[1][0], corner[1][1], corner[1][2]);
+        if (oa == CGAL::COLLINEAR || ob == CGAL::COLLINEAR)
+          return glm::dot(na, nb) > 0.0;
+        return oa == ob;
+      }();
       Failure touch{alike ? "coplanar faces overlap" : "faces touch", true,
                     false, alike};
       // Or one face lies on the inner side of the other's plane with a

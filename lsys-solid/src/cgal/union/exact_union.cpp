@@ -72,6 +72,17 @@ struct Failure {
   bool face_on_face = false;
 };
 
+// Keeps the first failure of a kind in `first` and adds what any later one
+// tells of the faces that touch.
+void keep_first(std::optional<Failure>& first, const Failure& f) {
+  if (!first) {
+    first = f;
+    return;
+  }
+  first->alike = first->alike || f.alike;
+  first->face_on_face = first->face_on_face || f.face_on_face;
+}
+
 // Orientations of points of one plane, in the projection along the largest
 // coordinate of its normal `n`, which keeps every orientation there.
 struct PlaneOrientation {
@@ -213,7 +224,6 @@ std::optional<Segment> cross_faces(const std::array<Operand, 2>& ops,
         return side[m][0] == CGAL::ZERO && side[m][1] == CGAL::ZERO &&
                side[m][2] == CGAL::ZERO;
       };
-      // Coplanar faces that face the same way.
       const bool coplanar = flat(0) && flat(1);
       const glm::dvec3 na =
           glm::cross(corner[0][1] - corner[0][0], corner[0][2] - corner[0][0]);
@@ -232,8 +242,9 @@ std::optional<Segment> cross_faces(const std::array<Operand, 2>& ops,
           return glm::dot(na, nb) > 0.0;
         return oa == ob;
       }();
-      Failure touch{alike ? "coplanar faces overlap" : "faces touch", true,
-                    false, alike};
+      Failure touch{
+          alike ? "coplanar faces that face the same way touch" : "faces touch",
+          true, false, alike};
       // Or one face lies on the inner side of the other's plane with a
       // corner inside the other face: the solids overlap there already (a
       // face that an earlier growth tilted into the other solid). On the
@@ -661,27 +672,13 @@ class Engine {
           }
         } catch (const Failure& f) {
           if (!f.degenerate) throw;
-          std::optional<Failure>& first =
-              f.transversal ? transversal[chunk] : touching[chunk];
-          if (!first) {
-            first = f;
-          } else {
-            first->alike = first->alike || f.alike;
-            first->face_on_face = first->face_on_face || f.face_on_face;
-          }
+          keep_first(f.transversal ? transversal[chunk] : touching[chunk], f);
         }
       }
     });
     std::optional<Failure> touch;
-    for (const std::optional<Failure>& f : touching) {
-      if (!f) continue;
-      if (!touch) {
-        touch = f;
-      } else {
-        touch->alike = touch->alike || f->alike;
-        touch->face_on_face = touch->face_on_face || f->face_on_face;
-      }
-    }
+    for (const std::optional<Failure>& f : touching)
+      if (f) keep_first(touch, *f);
     if (touch) throw *touch;
     for (const std::optional<Failure>& f : transversal)
       if (f) throw *f;

@@ -23,10 +23,13 @@ struct RoundingStats {
   /// The volume of the result less that of the input, in mm³, summed over
   /// calls.
   double volume_change_mm3 = 0.0;
-  /// Repairing with slivers collapsed left faces that meet, and the mesh
-  /// was rounded again from the start with slivers collapsed only where
-  /// rebuilding alone made no progress.
+  /// The result is the mesh repaired with slivers collapsed only where
+  /// rebuilding alone made no progress: collapsing them all left faces that
+  /// meet, or more of them after the first pass.
   bool slivers_kept = false;
+  /// The ways of repairing carried to their end, summed over calls: a second
+  /// when the first left faces that meet (round_and_repair).
+  int ways_tried = 0;
 };
 
 /// How to round.
@@ -63,11 +66,13 @@ void accumulate(RoundingStats& total, const RoundingStats& later);
 /// "Rounding"); rounding them makes degenerate and self-intersecting faces.
 /// Each pass rounds, collapses edges shorter than 10⁻⁴ mm, flips caps lower
 /// than that, and rebuilds the faces that still intersect (CGAL's
-/// experimental::remove_self_intersections), until none is left. If faces
-/// still meet after the last pass, the mesh is repaired again from the
-/// start collapsing and flipping slivers only where a pass of rebuilding
-/// made no progress (RoundingStats::slivers_kept), and that is kept if it
-/// leaves none. Every
+/// experimental::remove_self_intersections), until none is left. The other
+/// way collapses and flips slivers only where a pass of rebuilding made no
+/// progress (RoundingStats::slivers_kept). When more than a hundred pairs of
+/// faces meet after the first pass of the first way, the second makes its
+/// first pass too and the way that left fewer goes on; if faces still meet
+/// after its last pass, the other way is carried on, and kept if it leaves
+/// none. Every
 /// coordinate of the result is representable in the output format, so
 /// validating the result validates the file.
 /// @pre the mesh is closed and 2-manifold.

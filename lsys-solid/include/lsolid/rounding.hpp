@@ -37,10 +37,10 @@ struct RoundingOptions {
   /// What the file keeps of a coordinate (floats for STL, doubles for OFF
   /// and OBJ, grids for 3MF and OpenSCAD).
   Precision precision;
-  /// Whether a repair that leaves faces meeting is tried again with slivers
-  /// collapsed only where rebuilding made no progress (round_and_repair).
-  /// The union's own mends, which have other ways out (a shift, the
-  /// corefinement), do not.
+  /// Whether a repair that leaves faces meeting is carried on the other way
+  /// too (round_and_repair). The union's own mends, which have other ways
+  /// out (a shift, the corefinement), carry on only the way their first
+  /// passes chose.
   bool retry_keeping_slivers = true;
 };
 

@@ -141,7 +141,6 @@ class Attempt {
   [[nodiscard]] std::size_t pairs() const {
     return refused_ ? std::numeric_limits<std::size_t>::max() : pairs_.size();
   }
-  [[nodiscard]] bool clean() const { return clean_; }
 
   // The first half of a pass: rounds, removes degenerate faces and slivers,
   // and finds the faces that meet (none if CGAL refused a repair).

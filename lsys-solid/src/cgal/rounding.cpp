@@ -143,7 +143,8 @@ class Attempt {
   }
 
   // The first half of a pass: rounds, removes degenerate faces and slivers,
-  // and finds the faces that meet (none if CGAL refused a repair).
+  // and finds the faces that meet; stops where CGAL refuses a repair (then
+  // pairs() is the most there can be).
   void search() {
     stats_.passes = ++passes_;
     snap(mesh_, precision_);

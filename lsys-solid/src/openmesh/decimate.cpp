@@ -519,6 +519,10 @@ class GuardedDecimater : public OpenMesh::Decimater::BaseDecimaterT<Mesh> {
   // not asked exactly.
   // @pre take_new_triangles was called for the collapse.
   bool stays_in_plane(const CollapseInfo& ci) {
+    // Only a closed fan covers the region its link bounds (a half's
+    // boundary vertices are locked, so this holds there too; checked,
+    // not assumed).
+    if (mesh_.is_boundary(ci.v0)) return false;
     const Mesh::Normal n = mesh_.normal(*mesh_.vf_begin(ci.v0));
     for (const auto f : mesh_.vf_range(ci.v0)) {
       if (OpenMesh::dot(mesh_.normal(f), n) < kFlatCosine) return false;

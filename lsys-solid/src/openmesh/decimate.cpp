@@ -435,6 +435,7 @@ class GuardedDecimater : public OpenMesh::Decimater::BaseDecimaterT<Mesh> {
     }
     for (const auto v : mesh_.vertices()) enqueue(v);
     std::size_t face_count = mesh_.n_faces();
+    std::size_t indexed_faces = face_count;
     std::size_t collapses = 0;
     std::vector<Mesh::VertexHandle> support;
     while (!queue_.empty() && face_count > faces) {
@@ -449,11 +450,15 @@ class GuardedDecimater : public OpenMesh::Decimater::BaseDecimaterT<Mesh> {
         enqueue(v);
         continue;
       }
+      // A collapse that leaves the surface where it was (stays_in_plane)
+      // can neither stray from the input nor make faces meet that did not.
       const auto refused = [&] {
         take_new_triangles(ci);
-        return (samples != nullptr && !samples->hold(ci, new_, tolerance_mm)) ||
-               (input != nullptr && !stays_in_plane(ci) &&
-                strays(*input, tolerance_mm)) ||
+        if (samples != nullptr && !samples->hold(ci, new_, tolerance_mm))
+          return true;
+        if ((input != nullptr || guard != nullptr) && stays_in_plane(ci))
+          return false;
+        return (input != nullptr && strays(*input, tolerance_mm)) ||
                (guard != nullptr && guard->would_intersect(ci));
       };
       if (refused()) {
@@ -471,6 +476,14 @@ class GuardedDecimater : public OpenMesh::Decimater::BaseDecimaterT<Mesh> {
       postprocess_collapse(ci);
       if (samples != nullptr) samples->hand_over(new_faces_);
       if (guard != nullptr) guard->postprocess_collapse(ci);
+      // The guard's cells are sized to the edges when it indexed the mesh;
+      // once half the faces are gone, its faces span more cells than they
+      // need and every test walks them: indexed again (exact tests, so the
+      // same answers).
+      if (guard != nullptr && 2 * face_count <= indexed_faces) {
+        guard->initialize();
+        indexed_faces = face_count;
+      }
       ++collapses;
       for (const auto w : support) {
         for (const auto h : mesh_.voh_range(w))
@@ -515,8 +528,14 @@ class GuardedDecimater : public OpenMesh::Decimater::BaseDecimaterT<Mesh> {
   // same, the new triangles cover exactly the points the old ones covered,
   // which lay as near the input as strays() asked (Menger cubes and
   // space-filling curves of boxes: flat faces in pieces, strays() half of
-  // their decimation). A nearly flat star (normals apart in doubles) is
-  // not asked exactly.
+  // their decimation). Nor can a new triangle meet a face outside the fan
+  // that no old one met: the old ones met such a face only at the link's
+  // vertices and edges (the mesh has no intersecting faces), and a new
+  // triangle touches the link only at its own corners and sides (turning
+  // the same way, the new triangles sweep round v1 in strictly increasing
+  // angles, so no side from v1 passes through a link vertex); the
+  // intersection guard is not asked. A nearly flat star (normals apart in
+  // doubles) is not asked exactly.
   // @pre take_new_triangles was called for the collapse.
   bool stays_in_plane(const CollapseInfo& ci) {
     // Only a closed fan covers the region its link bounds (a half's

@@ -435,7 +435,6 @@ class GuardedDecimater : public OpenMesh::Decimater::BaseDecimaterT<Mesh> {
     }
     for (const auto v : mesh_.vertices()) enqueue(v);
     std::size_t face_count = mesh_.n_faces();
-    std::size_t indexed_faces = face_count;
     std::size_t collapses = 0;
     std::vector<Mesh::VertexHandle> support;
     while (!queue_.empty() && face_count > faces) {
@@ -476,15 +475,6 @@ class GuardedDecimater : public OpenMesh::Decimater::BaseDecimaterT<Mesh> {
       postprocess_collapse(ci);
       if (samples != nullptr) samples->hand_over(new_faces_);
       if (guard != nullptr) guard->postprocess_collapse(ci);
-      // The guard's cells are sized to the edges when it indexed the mesh,
-      // and a face that changes leaves stale entries behind: once half the
-      // faces are gone, indexed again (blog tree B's peak 1.76 GiB against
-      // 1.89, its time the same within the noise; exact tests, so the same
-      // answers).
-      if (guard != nullptr && 2 * face_count <= indexed_faces) {
-        guard->initialize();
-        indexed_faces = face_count;
-      }
       ++collapses;
       for (const auto w : support) {
         for (const auto h : mesh_.voh_range(w))

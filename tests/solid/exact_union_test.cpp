@@ -283,6 +283,51 @@ TEST(ExactUnion, LeavesCoplanarFacesThatFaceAlikeToTheCorefinement) {
   expect_printable(u.mesh);
 }
 
+// That `u` has the volume of the corefinement's union of `parts` (the
+// oracle) to 10⁻⁹, `shells` shells and its Euler characteristic; returns
+// that volume.
+double expect_as_the_corefinement(const std::vector<Part>& parts,
+                                  const UnionResult& u, std::size_t shells) {
+  const UnionResult oracle =
+      union_parts(parts, {.engine = UnionEngine::Corefinement});
+  const double volume = signed_volume(oracle.mesh);
+  EXPECT_NEAR(signed_volume(u.mesh), volume, 1e-9 * volume);
+  EXPECT_EQ(label_shells(u.mesh).count, shells);
+  EXPECT_EQ(label_shells(oracle.mesh).count, shells);
+  EXPECT_EQ(euler_characteristic(u.mesh), euler_characteristic(oracle.mesh));
+  return volume;
+}
+
+// A box against a larger box's side, their tops in one plane: a few
+// coplanar faces that face the same way (where the tops meet), among
+// hundreds of faces (each part holds a fine prism far away, as the touching
+// Hilbert curve's tubes meet cap to cap in one plane now and then). The
+// union is grown: the step it leaves along the tops' seam is mended by the
+// rounding to an STL's floats, and the volume is the corefinement's.
+TEST(ExactUnion, GrowsAnOperandWhereFewCoplanarFacesFaceAlike) {
+  TriangleMesh big = box_mesh({0, 0, 0}, {2, 2, 2});
+  append(big, prism({10, 10, 10}, {10, 10, 14}, 1.0, 150, 0.0));
+  TriangleMesh small = box_mesh({2, 0.5, 1}, {3, 1.5, 2});
+  append(small, prism({-10, 10, 10}, {-10, 10, 13}, 1.0, 150, 0.0));
+  std::vector<Part> parts{{big, "big"}, {small, "small"}};
+  FilterCounters filters;
+  const PairUnion pair = unite_pair(parts[0].mesh, parts[1].mesh, filters);
+  EXPECT_TRUE(pair.degenerate);
+  EXPECT_TRUE(pair.alike);
+  EXPECT_TRUE(pair.face_on_face);
+  EXPECT_GT(pair.alike_pairs, 0U);
+  EXPECT_LE(100 * pair.alike_pairs, small.triangles.size());
+  const UnionResult u = union_parts(parts);
+  EXPECT_EQ(u.stats.degenerate_unions, 0U) << u.stats.degenerate_reason;
+  EXPECT_EQ(u.stats.exact_unions, 1U);
+  EXPECT_EQ(u.stats.grown, 1U);
+  const double volume = expect_as_the_corefinement(parts, u, 3);
+  const Rounded rounded = round_for(u.mesh, MeshFormat::StlBinary);
+  EXPECT_TRUE(rounded.clean);
+  EXPECT_NEAR(signed_volume(rounded.mesh), volume, 1e-6 * volume);
+  expect_printable(rounded.mesh, 3);
+}
+
 // Two boxes side by side with coplanar bottoms are united first (the fewest
 // faces), by the corefinement; the prism that crosses both is then united
 // with their union by the exact engine again, as the union's points were
@@ -296,11 +341,7 @@ TEST(ExactUnion, ReturnsToTheExactEngineAfterFacesThatTouch) {
   EXPECT_EQ(u.stats.degenerate_unions, 1U);
   EXPECT_EQ(u.stats.booleans, 2U);
   EXPECT_EQ(u.stats.exact_unions, 1U);
-  const UnionResult oracle =
-      union_parts(parts, {.engine = UnionEngine::Corefinement});
-  const double volume = signed_volume(oracle.mesh);
-  EXPECT_NEAR(signed_volume(u.mesh), volume, 1e-9 * volume);
-  EXPECT_EQ(label_shells(u.mesh).count, 1U);
+  expect_as_the_corefinement(parts, u, 1);
   expect_printable(u.mesh);
 }
 

@@ -65,6 +65,10 @@ constexpr double kExactShiftMm = 1e-8;
 // of a double, so the faces that touched overlap for sure, while the volume
 // changes by less than 10⁻⁹ of a tube's (its surface times the distance).
 constexpr double kGrowthUlps = 1024.0;
+// A union where coplanar faces face the same way is grown only if there are
+// no more pairs of them than one in this many of the smaller operand's
+// faces (see merge).
+constexpr double kFewAlikeShare = 100.0;
 // A vertex is moved along a direction that leaves each of its faces at
 // least this much (the cosine of about 84°), and the whole grown region
 // along kShift by kGrowthShift of the distance: so every face moves
@@ -558,6 +562,7 @@ class Unioner {
     transversal_ = u.transversal;
     alike_ = u.alike;
     face_on_face_ = u.face_on_face;
+    alike_pairs_ = u.alike_pairs;
     unrounded_ = false;
     if (!u.failure.empty()) {
       last_failure_ = u.failure;
@@ -607,15 +612,21 @@ class Unioner {
       // that touch joins them, within 3·10⁻¹¹ mm. Not where solids touch
       // only at an edge or a point from outside (a growth would join them
       // by a neck that thin; the corefinement's shift parts or joins them),
-      // and not where coplanar faces face the same way (cubes side by side,
-      // their tops in one plane): a growth leaves a step that high between
-      // them, a sliver along their whole outline that rounding to the
-      // output's floats could not mend on Lparser's Menger cube (it rebuilt
-      // 23,802 faces and lost parts). The operand grown is one without an
+      // and not where many coplanar faces face the same way (cubes side by
+      // side, their tops in one plane): a growth leaves a step that high
+      // between them, a sliver along their whole outline, which rounding to
+      // the output's floats could not mend on Lparser's Menger cube (it
+      // rebuilt 23,802 faces and lost parts), where such pairs are 1.5 to
+      // 62 in a hundred of the smaller operand's faces. A few (the caps of
+      // tubes that end in one plane in the touching Hilbert curve, at most
+      // 0.2 in a hundred) leave steps the rounding mends, and those unions
+      // are grown (kFewAlikeShare). The operand grown is one without an
       // earlier growth's steps if one is, else the smaller; the other if
       // that one cannot grow.
       std::optional<Group> grown;
-      if (!u && degenerate_ && !transversal_ && face_on_face_ && !alike_) {
+      if (!u && degenerate_ && !transversal_ && face_on_face_ &&
+          (!alike_ || kFewAlikeShare * double(alike_pairs_) <=
+                          double(std::min(a.faces(), b.faces())))) {
         Group* order[2] = {&moved, &moved == &b ? &a : &b};
         if (order[0]->grown && !order[1]->grown) std::swap(order[0], order[1]);
         const double golden_step = kGolden * static_cast<double>(growths_++);
@@ -830,14 +841,15 @@ class Unioner {
   UnionEngine engine_;
   UnionStats stats_;
   exact_union::FilterCounters filters_;
-  std::string last_failure_;   // what CGAL said, if it threw
-  bool degenerate_ = false;    // the exact engine's last failure
-  bool transversal_ = false;   // and whether a shift removes it
-  bool alike_ = false;         // or coplanar faces that face the same way
-  bool face_on_face_ = false;  // and whether any lie face on face
-  bool unrounded_ = false;     // its new points could not be rounded
-  std::size_t shifts_ = 0;     // the exact engine's shifts so far
-  std::size_t growths_ = 0;    // and its operands grown
+  std::string last_failure_;     // what CGAL said, if it threw
+  bool degenerate_ = false;      // the exact engine's last failure
+  bool transversal_ = false;     // and whether a shift removes it
+  bool alike_ = false;           // or coplanar faces that face the same way
+  std::size_t alike_pairs_ = 0;  // how many pairs of those
+  bool face_on_face_ = false;    // and whether any lie face on face
+  bool unrounded_ = false;       // its new points could not be rounded
+  std::size_t shifts_ = 0;       // the exact engine's shifts so far
+  std::size_t growths_ = 0;      // and its operands grown
 };
 
 }  // namespace

@@ -70,6 +70,10 @@ struct Failure {
   // overlap in more than an edge or a point, or a face on the inner side of
   // the other's plane.
   bool face_on_face = false;
+  // Pairs of faces that touch, and of those coplanar faces that face the
+  // same way, over the failures kept in one (keep_first).
+  std::size_t touching_pairs = 0;
+  std::size_t alike_pairs = 0;
 };
 
 // Keeps the first failure of a kind in `first` and adds what any later one
@@ -81,6 +85,8 @@ void keep_first(std::optional<Failure>& first, const Failure& f) {
   }
   first->alike = first->alike || f.alike;
   first->face_on_face = first->face_on_face || f.face_on_face;
+  first->touching_pairs += f.touching_pairs;
+  first->alike_pairs += f.alike_pairs;
 }
 
 // Orientations of points of one plane, in the projection along the largest
@@ -245,6 +251,8 @@ std::optional<Segment> cross_faces(const std::array<Operand, 2>& ops,
       Failure touch{
           alike ? "coplanar faces that face the same way touch" : "faces touch",
           true, false, alike};
+      touch.touching_pairs = 1;
+      touch.alike_pairs = alike ? 1 : 0;
       // Or one face lies on the inner side of the other's plane with a
       // corner inside the other face: the solids overlap there already (a
       // face that an earlier growth tilted into the other solid). On the
@@ -606,6 +614,8 @@ class Engine {
       result.transversal = f.transversal;
       result.alike = f.alike;
       result.face_on_face = f.face_on_face;
+      result.touching_pairs = f.touching_pairs;
+      result.alike_pairs = f.alike_pairs;
     } catch (const CGAL::Failure_exception& e) {
       // A violated precondition of CGAL's (on as exceptions): a bug here.
       result.failure = std::string("CGAL: ") + e.what();

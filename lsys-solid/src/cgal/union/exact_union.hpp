@@ -56,6 +56,12 @@ struct PairUnion {
   /// touch only at an edge or a point from outside the corefinement's
   /// shift parts or joins.
   bool face_on_face = false;
+  /// Pairs of faces that touch (none unless `degenerate` and not
+  /// `transversal`).
+  std::size_t touching_pairs = 0;
+  /// Among those, coplanar pairs that face the same way: where they are
+  /// many, a growth's steps are more than the rounding to floats can mend.
+  std::size_t alike_pairs = 0;
   std::string failure;
   PairCounters counters;
 };

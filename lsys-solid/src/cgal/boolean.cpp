@@ -560,7 +560,6 @@ class Unioner {
     stats_.cut_faces += u.counters.cut_faces;
     degenerate_ = u.degenerate;
     transversal_ = u.transversal;
-    alike_ = u.alike;
     face_on_face_ = u.face_on_face;
     alike_pairs_ = u.alike_pairs;
     unrounded_ = false;
@@ -625,8 +624,8 @@ class Unioner {
       // that one cannot grow.
       std::optional<Group> grown;
       if (!u && degenerate_ && !transversal_ && face_on_face_ &&
-          (!alike_ || kFewAlikeShare * double(alike_pairs_) <=
-                          double(std::min(a.faces(), b.faces())))) {
+          kFewAlikeShare * double(alike_pairs_) <=
+              double(std::min(a.faces(), b.faces()))) {
         Group* order[2] = {&moved, &moved == &b ? &a : &b};
         if (order[0]->grown && !order[1]->grown) std::swap(order[0], order[1]);
         const double golden_step = kGolden * static_cast<double>(growths_++);
@@ -844,8 +843,7 @@ class Unioner {
   std::string last_failure_;     // what CGAL said, if it threw
   bool degenerate_ = false;      // the exact engine's last failure
   bool transversal_ = false;     // and whether a shift removes it
-  bool alike_ = false;           // or coplanar faces that face the same way
-  std::size_t alike_pairs_ = 0;  // how many pairs of those
+  std::size_t alike_pairs_ = 0;  // or pairs of coplanar faces alike
   bool face_on_face_ = false;    // and whether any lie face on face
   bool unrounded_ = false;       // its new points could not be rounded
   std::size_t shifts_ = 0;       // the exact engine's shifts so far

@@ -64,15 +64,12 @@ struct Failure {
   // on both sides of the other's): a shift takes the coincidence away and
   // leaves any crossing of the faces, unlike one of faces that touch.
   bool transversal = false;
-  // Among faces that touch, coplanar faces that face the same way.
-  bool alike = false;
   // Among faces that touch, coplanar faces that face each other and
   // overlap in more than an edge or a point, or a face on the inner side of
   // the other's plane.
   bool face_on_face = false;
-  // Pairs of faces that touch, and of those coplanar faces that face the
-  // same way, over the failures kept in one (keep_first).
-  std::size_t touching_pairs = 0;
+  // Among faces that touch, the pairs of coplanar faces that face the same
+  // way, over the failures kept in one (keep_first).
   std::size_t alike_pairs = 0;
 };
 
@@ -83,9 +80,7 @@ void keep_first(std::optional<Failure>& first, const Failure& f) {
     first = f;
     return;
   }
-  first->alike = first->alike || f.alike;
   first->face_on_face = first->face_on_face || f.face_on_face;
-  first->touching_pairs += f.touching_pairs;
   first->alike_pairs += f.alike_pairs;
 }
 
@@ -250,8 +245,7 @@ std::optional<Segment> cross_faces(const std::array<Operand, 2>& ops,
       }();
       Failure touch{
           alike ? "coplanar faces that face the same way touch" : "faces touch",
-          true, false, alike};
-      touch.touching_pairs = 1;
+          true, false};
       touch.alike_pairs = alike ? 1 : 0;
       // Or one face lies on the inner side of the other's plane with a
       // corner inside the other face: the solids overlap there already (a
@@ -612,9 +606,7 @@ class Engine {
       result.failure = f.what;
       result.degenerate = f.degenerate;
       result.transversal = f.transversal;
-      result.alike = f.alike;
       result.face_on_face = f.face_on_face;
-      result.touching_pairs = f.touching_pairs;
       result.alike_pairs = f.alike_pairs;
     } catch (const CGAL::Failure_exception& e) {
       // A violated precondition of CGAL's (on as exceptions): a bug here.
@@ -669,7 +661,8 @@ class Engine {
     // touch somewhere, that is the failure to report, since a shift could
     // part them.
     // Nor do faces that touch: the search goes on to learn whether any
-    // coplanar faces that face the same way are among them (PairUnion::alike).
+    // coplanar faces that face the same way are among them, and how many
+    // (PairUnion::alike_pairs).
     std::vector<std::optional<Failure>> transversal(chunks);
     std::vector<std::optional<Failure>> touching(chunks);
     for_each_chunk(pairs.size(), [&](std::size_t begin, std::size_t end,

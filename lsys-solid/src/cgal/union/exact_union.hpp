@@ -45,10 +45,11 @@ struct PairUnion {
   /// where faces touch: a shift removes it and keeps faces that cross
   /// crossing.
   bool transversal = false;
-  /// Among the faces that touch, coplanar faces that face the same way
-  /// (cubes side by side with their tops in one plane): growing an operand
-  /// would leave a step as high as the growth between them.
-  bool alike = false;
+  /// Among the faces that touch, the pairs of coplanar faces that face the
+  /// same way (cubes side by side with their tops in one plane): growing an
+  /// operand leaves a step as high as the growth between them, which the
+  /// rounding to floats mends only where they are few.
+  std::size_t alike_pairs = 0;
   /// Among the faces that touch, coplanar faces that face each other and
   /// overlap in more than an edge or a point, or a face on the inner side
   /// of the other's plane that meets it at an edge or a corner: solids that
@@ -56,12 +57,6 @@ struct PairUnion {
   /// touch only at an edge or a point from outside the corefinement's
   /// shift parts or joins.
   bool face_on_face = false;
-  /// Pairs of faces that touch (none unless `degenerate` and not
-  /// `transversal`).
-  std::size_t touching_pairs = 0;
-  /// Among those, coplanar pairs that face the same way: where they are
-  /// many, a growth's steps are more than the rounding to floats can mend.
-  std::size_t alike_pairs = 0;
   std::string failure;
   PairCounters counters;
 };

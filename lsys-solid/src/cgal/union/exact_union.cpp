@@ -22,12 +22,14 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/intersections.h>
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <memory>
@@ -646,15 +648,31 @@ class Engine {
         face[m].push_back(f);
       }
     }
-    // The faces are listed in increasing order, so the pairs come sorted.
+    // Each pair whose boxes meet is tested as the search meets it, on the
+    // search's threads, and kept only if its faces cross or meet in a
+    // degeneracy; the kept pairs are tested again below, in order, for
+    // their segments and failures (the same whatever the threads). Listed
+    // whole first, the 32.7 million pairs of blog tree B's last union took
+    // 2.5-3.0 s to gather and sort and 1.5 s to test, twice (a transversal
+    // degeneracy, then the shifted retry), for a few hundred thousand that
+    // cross. The faces are listed in increasing order, so the pairs come
+    // sorted.
+    tbb::enumerable_thread_specific<std::size_t> met(0);
+    const auto crossing = [&](std::uint32_t x, std::uint32_t y) {
+      ++met.local();
+      try {
+        return cross_faces(ops_, face[0][x], face[1][y]).has_value();
+      } catch (const Failure&) {
+        return true;
+      }
+    };
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs =
-        meeting_box_pairs(boxes[0], boxes[1],
-                          [](std::uint32_t, std::uint32_t) { return true; });
+        meeting_box_pairs(boxes[0], boxes[1], crossing);
     for (auto& [x, y] : pairs) {
       x = face[0][x];
       y = face[1][y];
     }
-    counters_.face_pairs = pairs.size();
+    counters_.face_pairs = met.combine(std::plus<>());
     const std::size_t chunks = (pairs.size() + 255) / 256;
     std::vector<std::vector<Segment>> found(chunks);
     // A transversal degeneracy does not stop the search: if faces also

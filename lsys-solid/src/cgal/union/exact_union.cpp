@@ -1201,6 +1201,7 @@ bool rounding_kept_valid(const PairUnion& u) {
   std::vector<Box> unchanged;
   std::vector<std::uint32_t> changed_face;  // per box
   std::vector<std::uint32_t> unchanged_face;
+  std::vector<char> unchanged_degenerate;
   for (const std::uint32_t f : u.contact_faces) {
     const IndexedTriangle t = triangle(f);
     Box b;
@@ -1212,22 +1213,29 @@ bool rounding_kept_valid(const PairUnion& u) {
     } else {
       unchanged.push_back(b);
       unchanged_face.push_back(f);
+      unchanged_degenerate.push_back(is_degenerate(t) ? 1 : 0);
     }
   }
   // Each pair once: changed faces among themselves, then against the rest;
-  // once one pair is found to meet, the others are no longer tested.
+  // once one pair is found to meet, the others are no longer tested. Each
+  // face's degeneracy is decided once above, not for every pair it is in
+  // (triangles_intersect's two collinearity tests a pair).
   std::atomic<bool> ok{true};
-  const auto meets = [&](std::uint32_t f, std::uint32_t g) {
-    if (ok && triangles_intersect(triangle(f), triangle(g))) ok = false;
+  const auto meets = [&](std::uint32_t f, std::uint32_t g, bool degenerate) {
+    if (ok &&
+        (degenerate || proper_triangles_intersect(triangle(f), triangle(g)))) {
+      ok = false;
+    }
     return false;
   };
   (void)meeting_box_pairs(changed, [&](std::uint32_t i, std::uint32_t j) {
-    return meets(changed_face[i], changed_face[j]);
+    return meets(changed_face[i], changed_face[j], false);
   });
   if (ok) {
     (void)meeting_box_pairs(changed, unchanged,
                             [&](std::uint32_t i, std::uint32_t j) {
-                              return meets(changed_face[i], unchanged_face[j]);
+                              return meets(changed_face[i], unchanged_face[j],
+                                           unchanged_degenerate[j] != 0);
                             });
   }
   return ok;

@@ -22,14 +22,12 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/intersections.h>
 #include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
-#include <functional>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <memory>
@@ -657,9 +655,7 @@ class Engine {
     // degeneracy, then the shifted retry), for a few hundred thousand that
     // cross. The faces are listed in increasing order, so the pairs come
     // sorted.
-    tbb::enumerable_thread_specific<std::size_t> met(0);
     const auto crossing = [&](std::uint32_t x, std::uint32_t y) {
-      ++met.local();
       try {
         return cross_faces(ops_, face[0][x], face[1][y]).has_value();
       } catch (const Failure&) {
@@ -672,7 +668,6 @@ class Engine {
       x = face[0][x];
       y = face[1][y];
     }
-    counters_.face_pairs = met.combine(std::plus<>());
     const std::size_t chunks = (pairs.size() + 255) / 256;
     std::vector<std::vector<Segment>> found(chunks);
     // A transversal degeneracy does not stop the search: if faces also

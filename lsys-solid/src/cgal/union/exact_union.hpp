@@ -22,7 +22,6 @@ struct FilterCounters {
 
 /// What one union of two operands found and asked.
 struct PairCounters {
-  std::size_t face_pairs = 0;    ///< pairs of faces whose boxes meet
   std::size_t crossings = 0;     ///< edge–face crossings, each decided once
   std::size_t cut_faces = 0;     ///< faces triangulated again
   std::size_t inside_tests = 0;  ///< surfaces no crossing touches, tested

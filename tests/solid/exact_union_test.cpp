@@ -369,5 +369,28 @@ TEST(ExactUnion, RefusesFacesThatTouchAsADegeneracyAndSaysHow) {
   }
 }
 
+// A box, and an octagonal prism beside it whose top cap's centre lies in the
+// plane of the box's side (a finding of the union fuzz target): the cap and
+// that side straddle each other's planes, and a corner of the cap lies in
+// the side's plane, yet they miss each other, as do the solids, by 10⁻¹⁶.
+// No degeneracy, no shift (which joined the two), and two shells as the
+// corefinement has them.
+TEST(ExactUnion, PartsSolidsWhoseFacesStraddleEachOthersPlanesAndMiss) {
+  const TriangleMesh octagon = prism({0, 1.5, 0}, {0, 1.5, 1.5}, 1.0, 8, 0.0);
+  ASSERT_EQ(octagon.vertices[16], glm::dvec3(0, 1.5, 0));
+  ASSERT_EQ(octagon.vertices[4].y, 0.5);
+  ASSERT_LT(octagon.vertices[4].x, 0.0);
+  const std::vector<Part> parts{{box_mesh({0, 0, 0}, {3.5, 0.5, 3}), "box"},
+                                {octagon, "prism"}};
+  FilterCounters filters;
+  const PairUnion pair = unite_pair(parts[0].mesh, parts[1].mesh, filters);
+  EXPECT_FALSE(pair.degenerate) << pair.failure;
+  const UnionResult u = union_parts(parts);
+  EXPECT_EQ(u.stats.retries, 0U);
+  EXPECT_EQ(u.stats.degenerate_unions, 0U) << u.stats.degenerate_reason;
+  expect_as_the_corefinement(parts, u, 2);
+  expect_printable(u.mesh, 2);
+}
+
 }  // namespace
 }  // namespace lsolid::exact_union

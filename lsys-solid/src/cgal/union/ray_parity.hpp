@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
+#include <cstdint>
 #include <glm/vec3.hpp>
 #include <optional>
 #include <vector>
@@ -37,5 +38,19 @@ struct RaySurface {
 /// @pre the surface is closed and free of self-intersections; 0 <= axis < 3.
 [[nodiscard]] std::optional<RaySide> side_by_ray(const RaySurface& surface,
                                                  const glm::dvec3& p, int axis);
+
+/// side_by_ray along `axis` for each of `points` at once, each as a ray
+/// of its own: the points are kept in a grid over the other two
+/// coordinates, and each face is met only by the points whose rays its box
+/// lies across. For many faces and few points (the union's checks: a few
+/// thousand points inside the parts against a union of hundreds of
+/// thousands of faces, where CGAL's Side_of_triangle_mesh built a
+/// Surface_mesh and an AABB tree over all of them). Nothing for a point
+/// whose ray meets an edge or a vertex, or runs in the plane of a face it
+/// meets, whatever else it meets; else on the surface if the point lies on
+/// a face its ray meets.
+/// @pre the surface is closed and free of self-intersections; 0 <= axis < 3.
+[[nodiscard]] std::vector<std::optional<RaySide>> sides_by_ray(
+    const TriangleMesh& mesh, const std::vector<glm::dvec3>& points, int axis);
 
 }  // namespace lsolid::exact_union

@@ -137,9 +137,11 @@ std::vector<std::optional<RaySide>> sides_by_ray(
   // that a point within a face's box lies in one of the box's cells.
   const int cells_u = static_cast<int>(std::floor((hi_u - lo_u) / cell_mm)) + 1;
   const int cells_v = static_cast<int>(std::floor((hi_v - lo_v) / cell_mm)) + 1;
+  // Clamped before the conversion: a face far larger than the points'
+  // shadow reaches cells beyond the range of int.
   const auto cell = [&](double x, double origin, int cells) {
-    return std::clamp(static_cast<int>(std::floor((x - origin) / cell_mm)), 0,
-                      cells - 1);
+    return static_cast<int>(std::clamp(std::floor((x - origin) / cell_mm), 0.0,
+                                       static_cast<double>(cells - 1)));
   };
   const std::size_t cells =
       static_cast<std::size_t>(cells_u) * static_cast<std::size_t>(cells_v);

@@ -2,7 +2,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 
-#include <cstdint>
 #include <glm/vec3.hpp>
 #include <optional>
 #include <vector>

@@ -569,5 +569,24 @@ TEST(Lpy, ReadsRangeEnumerationsAndLambdasAsConstantsAndFunctions) {
       "1:8: range(3) gives 3 values to 2 names");
 }
 
+// Python's call syntax: `F()` is F without parameters, in the axiom, a
+// successor and a predecessor alike (a published L-Py file writes it).
+TEST(Lpy, ReadsModulesCalledWithEmptyParenthesesAsWithoutParameters) {
+  const Skeleton s = drawn("F()F(2)f()F( )");
+  ASSERT_EQ(s.segments.size(), 3U);
+  const auto length = [&](std::size_t i) {
+    return glm::distance(s.segments[i].p0, s.segments[i].p1);
+  };
+  EXPECT_DOUBLE_EQ(length(0), 1.0);
+  EXPECT_DOUBLE_EQ(length(1), 2.0);
+  EXPECT_DOUBLE_EQ(length(2), 1.0);
+  // f() moves a step without drawing.
+  EXPECT_DOUBLE_EQ(glm::distance(s.segments[1].p1, s.segments[2].p0), 1.0);
+  const Skeleton doubled =
+      interpret(kLpy.parse("Axiom: F()\nderivation length: 3\nproduction:\n"
+                           "F() --> F()F()\nendlsystem\n"));
+  EXPECT_EQ(doubled.segments.size(), 8U);
+}
+
 }  // namespace
 }  // namespace lsys

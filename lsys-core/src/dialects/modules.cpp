@@ -85,8 +85,10 @@ void ModuleReader::tokenize_each(Range r, const Each& each) {
         if (text_[close] == ')' && --depth == 0) break;
       }
       if (close >= r.end) fail(j, "unclosed '('");
-      const bool none = draft_.syntax.identifier_modules &&
-                        trim(Range{j + 1, close}).empty();  // `SB()`
+      // `SB()` (lpfg), `F()` (L-Py, a Python call): no parameters.
+      const bool none =
+          (draft_.syntax.identifier_modules || draft_.syntax.python) &&
+          trim(Range{j + 1, close}).empty();
       for (const Range& arg :
            none ? std::vector<Range>{} : split_top(Range{j + 1, close}, ',')) {
         if (trim(arg).empty()) fail(arg.begin, "expected an expression");

@@ -75,6 +75,21 @@ TEST(Parser, ReadsAnyLabelBeforeTheProduction) {
             "B");
 }
 
+// A system pasted from Houdini's parameter pane keeps its field names:
+// `Premise`, `Generations`, `Angle`, and `Rule 1` to `Rule 24` before the
+// productions, with `=` or `->`.
+TEST(Parser, ReadsHoudinisRuleFieldNamesBeforeProductions) {
+  const std::string pasted =
+      "Premise: X\nGenerations: 2\nAngle: 20\n"
+      "Rule 1: X = F[+X]F[-X]+X\nRULE  12 : F -> FF\n";
+  EXPECT_EQ(derived(pasted), derived("premise: X\nn=2, angle=20\n"
+                                     "X = F[+X]F[-X]+X\nF -> FF\n"));
+  EXPECT_EQ(derived(pasted), "FF[+F[+X]F[-X]+X]FF[-F[+X]F[-X]+X]+F[+X]F[-X]+X");
+  const Grammar g = parse(pasted);
+  ASSERT_EQ(g.productions.size(), 2U);
+  EXPECT_DOUBLE_EQ(g.settings.angle_deg, 20.0);
+}
+
 TEST(Parser, ReadsAWordBeforeAStarAsAPredecessorWithACondition) {
   const Grammar g = parse("axiom: A\nA : * \u2192 B\n");
   ASSERT_EQ(g.productions.size(), 1U);

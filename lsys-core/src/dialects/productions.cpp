@@ -44,6 +44,7 @@ Range ProductionReader::strip_label(Range lhs) const {
   if (colon == std::string::npos) return lhs;
   const Range label = trim(Range{lhs.begin, colon});
   const Range rest = trim(Range{colon + 1, lhs.end});
+  if (is_field_label(label)) return rest;
   if (!is_label_word(label)) return lhs;
   if (find_top(rest, ":") != std::string::npos) return rest;
   if (view(rest) == "*" || rest.empty()) return lhs;
@@ -60,6 +61,26 @@ Range ProductionReader::strip_label(Range lhs) const {
              std::string(view(rest)) + " \u2192 \u2026' for a condition");
   }
   return rest;
+}
+
+// Houdini's L-system node names its fields `Rule 1` to `Rule 24` in its
+// parameter pane, and a system pasted from there keeps those names before
+// each production (`Rule 1: X = F[+X]F`): any case, blanks between.
+bool ProductionReader::is_field_label(Range r) const {
+  const std::string_view word = view(r);
+  constexpr std::string_view kRule = "rule";
+  if (word.size() <= kRule.size() ||
+      !std::equal(kRule.begin(), kRule.end(), word.begin(),
+                  [](char a, char b) { return a == lower(b); })) {
+    return false;
+  }
+  std::size_t i = kRule.size();
+  const std::size_t blanks = i;
+  while (i < word.size() && is_blank(word[i])) ++i;
+  if (i == blanks || i == word.size()) return false;
+  return std::all_of(
+      word.begin() + static_cast<std::ptrdiff_t>(i), word.end(),
+      [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; });
 }
 
 // `p1:` or `P12:` before the production; nothing else is a label.

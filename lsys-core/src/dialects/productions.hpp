@@ -42,6 +42,8 @@ class ProductionReader : protected TextScan {
   };
 
   bool is_label_word(Range r) const;
+  // Houdini's parameter pane's `Rule 1` (any case), before a production.
+  bool is_field_label(Range r) const;
   bool is_constant_condition(Range r) const;
   Range strip_label(Range lhs) const;
   Range strip_numbered_label(Range lhs) const;

@@ -196,5 +196,25 @@ TEST(Lpfg, RefusesWhatItCannotReadAtItsPlace) {
             "(--include-dir allows another)");
 }
 
+// `using` only brings names into scope, which the expressions know by their
+// plain names: read as nothing. A type is refused as one (a published file's
+// `using namespace std;` was refused as "groups, structures or types").
+TEST(Lpfg, ReadsUsingAsNothingAndNamesWhatItRefuses) {
+  const std::string body =
+      "derivation length: 1;\nmodule A();\nAxiom: A();\n"
+      "A() : { produce F(sin(0.5)) A(); }\n";
+  EXPECT_EQ(
+      interpret(kLpfg.parse(std::string(kHead) +
+                            "using namespace std;\nusing std::sin;\n" + body))
+          .segments.size(),
+      1U);
+  EXPECT_EQ(
+      located_error_of([&] {
+        (void)kLpfg.parse(std::string(kHead) + "typedef float real;\n" + body);
+      }),
+      "4:1: 'typedef float real': a C++ type; lsolid reads modules of "
+      "numbers only (docs/dialects/lpfg.md)");
+}
+
 }  // namespace
 }  // namespace lsys

@@ -450,12 +450,25 @@ class LpfgReader : TextScan {
       read_modules(Range{i + 7, s.end});
       return;
     }
-    if (t.starts_with("group ") || t == "endgroup" ||
-        t.starts_with("struct ") || t.starts_with("typedef ") ||
-        t.starts_with("using ") || t.starts_with("#")) {
-      fail(i, quoted(t,
-                     ": lsolid does not read lpfg's groups, structures or "
-                     "types (docs/dialects/lpfg.md)"));
+    // `using namespace std;`, `using std::sin;`: names brought into scope,
+    // which lsolid's expressions know by their plain names anyway.
+    if (t.starts_with("using ")) return;
+    // The rest is refused naming what it is (a published file's `using`
+    // got a message about groups, structures and types at once).
+    const auto refuse = [&](std::string_view what) {
+      fail(i, quoted(t, std::string(": ") + std::string(what) +
+                            " (docs/dialects/lpfg.md)"));
+    };
+    if (t.starts_with("group ") || t == "endgroup") {
+      refuse(
+          "a group statement lsolid does not read (groups are 'group N:' "
+          "… 'endgroup')");
+    }
+    if (t.starts_with("struct ") || t.starts_with("typedef ")) {
+      refuse("a C++ type; lsolid reads modules of numbers only");
+    }
+    if (t.starts_with("#")) {
+      refuse("a preprocessor directive lsolid does not read");
     }
     std::size_t k = i;
     bool is_const = false;

@@ -9,36 +9,43 @@
 
 namespace lsolid {
 
-ShellLabels label_shells(const TriangleMesh& mesh) {
-  const std::size_t n = mesh.triangles.size();
-  // The triangles round each vertex (counted, then filled, in triangle
-  // order); a triangle is joined to those round its edge's first vertex
-  // that also hold the edge's second. A hash map from each edge to its
-  // first triangle was most of fill_cavities, which the build runs twice
-  // on the union (blog tree B: 1.7 million triangles, 5 million edges).
+VertexStars vertex_stars(const TriangleMesh& mesh) {
   std::uint32_t vertices = 0;
   for (const auto& t : mesh.triangles) {
     vertices = std::max({vertices, t[0] + 1, t[1] + 1, t[2] + 1});
   }
-  std::vector<std::uint32_t> first(std::size_t{vertices} + 1, 0);
+  VertexStars out;
+  out.first.assign(std::size_t{vertices} + 1, 0);
   for (const auto& t : mesh.triangles) {
-    for (const std::uint32_t v : t) ++first[v + 1];
+    for (const std::uint32_t v : t) ++out.first[v + 1];
   }
-  for (std::size_t v = 0; v < vertices; ++v) first[v + 1] += first[v];
-  std::vector<std::uint32_t> round(first.back());
-  std::vector<std::uint32_t> next(first.begin(), first.end() - 1);
-  for (std::uint32_t f = 0; f < n; ++f) {
-    for (const std::uint32_t v : mesh.triangles[f]) round[next[v]++] = f;
+  for (std::size_t v = 0; v < vertices; ++v) out.first[v + 1] += out.first[v];
+  out.triangles.resize(out.first.back());
+  std::vector<std::uint32_t> next(out.first.begin(), out.first.end() - 1);
+  for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f) {
+    for (const std::uint32_t v : mesh.triangles[f])
+      out.triangles[next[v]++] = f;
   }
+  return out;
+}
+
+ShellLabels label_shells(const TriangleMesh& mesh) {
+  const std::size_t n = mesh.triangles.size();
+  // A triangle is joined to the later ones round its side's first vertex
+  // that also hold the side's second (each pair once: sharing a side is
+  // symmetric). A hash map from each edge to its first triangle was most of
+  // fill_cavities, which the build runs twice on the union (blog tree B:
+  // 1.7 million triangles, 5 million edges).
+  const VertexStars stars = vertex_stars(mesh);
   UnionFind shells(n);
   for (std::uint32_t f = 0; f < n; ++f) {
     const auto& t = mesh.triangles[f];
     for (std::size_t k = 0; k < 3; ++k) {
       const std::uint32_t a = t[k];
       const std::uint32_t b = t[(k + 1) % 3];
-      for (std::uint32_t e = first[a]; e < first[a + 1]; ++e) {
-        const std::uint32_t g = round[e];
-        if (g == f) continue;
+      for (std::uint32_t e = stars.first[a]; e < stars.first[a + 1]; ++e) {
+        const std::uint32_t g = stars.triangles[e];
+        if (g <= f) continue;
         const auto& u = mesh.triangles[g];
         // Two distinct vertices of a triangle are an edge of it; a side
         // from a vertex to itself (a degenerate triangle) is one only of a

@@ -27,6 +27,18 @@ struct ShellLabels {
   std::size_t count = 0;
 };
 
+/// The triangles round each vertex, in triangle order (a triangle with a
+/// vertex twice is listed twice there): those of vertex v are
+/// `triangles[first[v]]` up to `triangles[first[v + 1]]`. `first` has an
+/// entry for every vertex a triangle uses, and one past.
+struct VertexStars {
+  std::vector<std::uint32_t> first;
+  std::vector<std::uint32_t> triangles;
+};
+
+/// The stars of `mesh`'s vertices.
+[[nodiscard]] VertexStars vertex_stars(const TriangleMesh& mesh);
+
 /// Labels each triangle with its shell.
 [[nodiscard]] ShellLabels label_shells(const TriangleMesh& mesh);
 

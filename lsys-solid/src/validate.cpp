@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <glm/geometric.hpp>
+#include <span>
 #include <unordered_map>
 
 #include "cgal/exact_checks.hpp"
@@ -25,13 +26,12 @@ struct EdgeUse {
 
 // Vertices whose incident triangles do not form one edge-connected fan.
 std::size_t count_non_manifold_vertices(const TriangleMesh& mesh) {
-  std::vector<std::vector<std::uint32_t>> incident(mesh.vertices.size());
-  for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f) {
-    for (const std::uint32_t v : mesh.triangles[f]) incident[v].push_back(f);
-  }
+  const VertexStars stars = vertex_stars(mesh);
   std::size_t count = 0;
-  for (std::uint32_t v = 0; v < incident.size(); ++v) {
-    const auto& faces = incident[v];
+  for (std::uint32_t v = 0; v + 1 < stars.first.size(); ++v) {
+    const std::span<const std::uint32_t> faces(
+        stars.triangles.data() + stars.first[v],
+        stars.first[v + 1] - stars.first[v]);
     if (faces.size() < 2) continue;
     UnionFind fans(faces.size());
     std::unordered_map<std::uint32_t, std::uint32_t> first_by_neighbour;

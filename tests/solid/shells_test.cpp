@@ -131,5 +131,29 @@ TEST(Shells, SumsEachShellsVolumeAndTellsACavityByItsSign) {
   EXPECT_DOUBLE_EQ(volumes[1], -1.0);
 }
 
+TEST(Shells, ListsTheTrianglesRoundEachVertexInTriangleOrder) {
+  TriangleMesh mesh = box_mesh({0, 0, 0}, {1, 1, 1});
+  // A degenerate triangle with vertex 0 twice: listed twice round it.
+  mesh.triangles.push_back({0, 0, 7});
+  const VertexStars stars = vertex_stars(mesh);
+  ASSERT_EQ(stars.first.size(), 9U);
+  EXPECT_EQ(stars.triangles.size(), 3 * mesh.triangles.size());
+  for (std::uint32_t v = 0; v < 8; ++v) {
+    std::vector<std::uint32_t> expected;
+    for (std::uint32_t f = 0; f < mesh.triangles.size(); ++f) {
+      for (const std::uint32_t w : mesh.triangles[f]) {
+        if (w == v) expected.push_back(f);
+      }
+    }
+    EXPECT_EQ(std::vector<std::uint32_t>(
+                  stars.triangles.begin() + stars.first[v],
+                  stars.triangles.begin() + stars.first[v + 1]),
+              expected)
+        << v;
+  }
+  // Three of the box's triangles, and the degenerate one twice.
+  EXPECT_EQ(stars.first[1] - stars.first[0], 5U);
+}
+
 }  // namespace
 }  // namespace lsolid

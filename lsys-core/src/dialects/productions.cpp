@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -67,20 +68,14 @@ Range ProductionReader::strip_label(Range lhs) const {
 // parameter pane, and a system pasted from there keeps those names before
 // each production (`Rule 1: X = F[+X]F`): any case, blanks between.
 bool ProductionReader::is_field_label(Range r) const {
-  const std::string_view word = view(r);
-  constexpr std::string_view kRule = "rule";
-  if (word.size() <= kRule.size() ||
-      !std::equal(kRule.begin(), kRule.end(), word.begin(),
-                  [](char a, char b) { return a == lower(b); })) {
-    return false;
-  }
-  std::size_t i = kRule.size();
-  const std::size_t blanks = i;
-  while (i < word.size() && is_blank(word[i])) ++i;
-  if (i == blanks || i == word.size()) return false;
-  return std::all_of(
-      word.begin() + static_cast<std::ptrdiff_t>(i), word.end(),
-      [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; });
+  const std::optional<std::size_t> number =
+      match_words(r.begin, r.end, "rule ");
+  return number && *number < r.end &&
+         std::all_of(text_.begin() + static_cast<std::ptrdiff_t>(*number),
+                     text_.begin() + static_cast<std::ptrdiff_t>(r.end),
+                     [](char c) {
+                       return std::isdigit(static_cast<unsigned char>(c)) != 0;
+                     });
 }
 
 // `p1:` or `P12:` before the production; nothing else is a label.

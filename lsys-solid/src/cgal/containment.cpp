@@ -111,6 +111,8 @@ std::vector<Witness> witnesses_outside(const TriangleMesh& mesh,
                                        double min_depth_mm) {
   std::vector<Witness> outside;
   if (witnesses.empty()) return outside;
+  // Built first for its refusal of a mesh that is not a 2-manifold; the
+  // faces are searched only where all three rays below meet an edge.
   const InexactMesh solid =
       surface_mesh_or_throw<InexactMesh>(mesh, "test points against");
   // Each witness by the parity of the faces that a ray from it along an

@@ -1163,8 +1163,7 @@ Decimated decimate_once(const TriangleMesh& input,
     box.max = glm::max(box.max, other.max);
     const double limit_mm = 2.0 * glm::length(box.size()) + 1.0;
     // The output from the input first, beside the caller's check of the
-    // result (serial: CGAL's self-intersection search and orientation
-    // tests), as tasks on oneTBB's threads. Then the input from the output,
+    // result, as tasks on oneTBB's threads. Then the input from the output,
     // only where it could exceed that: the pieces bound how far each input
     // triangle's samples lie from the face that holds them, and a triangle
     // whose bound is below the distance already measured cannot change the
@@ -1172,9 +1171,10 @@ Decimated decimate_once(const TriangleMesh& input,
     // bush at n = 7: 0.9 s of measuring, most of it on triangles whose
     // samples lie well within). The margin covers the rounding of a
     // distance computed from a face's corners in another order.
-    const TriangleSet kept_in_output = triangle_set(out.mesh);
+    TriangleSet kept_in_output;
     double output_from_input = 0.0;
     tbb::parallel_invoke(
+        [&] { kept_in_output = triangle_set(out.mesh); },
         [&] {
           const TriangleSet kept_from_input = triangle_set(input);
           output_from_input = sampled_distance(

@@ -4,12 +4,11 @@
 
 #include <gtest/gtest.h>
 
-#include <array>
-#include <map>
 #include <random>
 #include <set>
 #include <vector>
 
+#include "lsolid/precision.hpp"
 #include "support/mesh_checks.hpp"
 #include "union_find.hpp"
 
@@ -49,24 +48,9 @@ ShellLabels shells_by_pairs(const TriangleMesh& mesh) {
   return out;
 }
 
-// The mesh with equal points made one vertex, the first of them.
-void weld_vertices(TriangleMesh& mesh) {
-  std::map<std::array<double, 3>, std::uint32_t> first;
-  std::vector<std::uint32_t> index(mesh.vertices.size());
-  TriangleMesh out;
-  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-    const glm::dvec3& p = mesh.vertices[v];
-    const auto [it, inserted] =
-        first.emplace(std::array{p.x, p.y, p.z},
-                      static_cast<std::uint32_t>(out.vertices.size()));
-    if (inserted) out.vertices.push_back(p);
-    index[v] = it->second;
-  }
-  for (auto t : mesh.triangles) {
-    for (std::uint32_t& v : t) v = index[v];
-    out.triangles.push_back(t);
-  }
-  mesh = std::move(out);
+// The mesh with equal points made one vertex (snapped merges them).
+TriangleMesh welded(const TriangleMesh& mesh) {
+  return snapped(mesh, Precision{.kind = Precision::Kind::Double});
 }
 
 TEST(Shells, NumbersShellsInTheOrderOfTheirFirstTriangles) {
@@ -87,13 +71,13 @@ TEST(Shells, KeepsBoxesThatShareAVertexApartAndJoinsThoseThatShareAnEdge) {
   TriangleMesh corner = box_mesh({0, 0, 0}, {1, 1, 1});
   TriangleMesh other = box_mesh({1, 1, 1}, {2, 2, 2});
   append(corner, other);
-  weld_vertices(corner);
+  corner = welded(corner);
   ASSERT_EQ(corner.vertices.size(), 15U);
   EXPECT_EQ(label_shells(corner).count, 2U);
   // Boxes meeting along the edge x = 1, y = 1, welded there.
   TriangleMesh edge = box_mesh({0, 0, 0}, {1, 1, 1});
   append(edge, box_mesh({1, 1, 0}, {2, 2, 1}));
-  weld_vertices(edge);
+  edge = welded(edge);
   ASSERT_EQ(edge.vertices.size(), 14U);
   EXPECT_EQ(label_shells(edge).count, 1U);
 }
